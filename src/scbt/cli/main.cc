@@ -1,0 +1,25 @@
+// scbt: the command-line front end. Each subcommand only declares its options and calls the
+// library function that does the work (src/scbt/app), so tests can call the same code.
+#include <CLI/CLI.hpp>
+#include <exception>
+#include <iostream>
+
+#include "scbt/cli/commands.h"
+
+int main(int argc, char** argv) {
+  CLI::App app{"scbt: real-time salient closed boundary tracking via line segment grouping"};
+  app.require_subcommand(1);
+  app.set_version_flag("--version", "scbt 0.1.0");
+  int exit_code = 0;
+  scbt::cli::add_track_command(app, &exit_code);
+  scbt::cli::add_demo_command(app, &exit_code);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    return app.exit(e);
+  } catch (const std::exception& e) {
+    std::cerr << "scbt: error: " << e.what() << std::endl;
+    return 1;
+  }
+  return exit_code;
+}

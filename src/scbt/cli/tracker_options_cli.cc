@@ -1,0 +1,34 @@
+#include "scbt/cli/commands.h"
+
+namespace scbt::cli {
+
+void add_tracker_options(CLI::App* command, TrackerOptions* options, std::string* detector_name) {
+  command->add_option("--detector", *detector_name, "Line segment detector: edlines, lsd or fld")
+      ->capture_default_str();
+  command
+      ->add_option("--filter-distance", options->filter_distance,
+                   "Keep segments whose mean distance to the previous boundary is below this (px)")
+      ->capture_default_str();
+  command
+      ->add_option("--min-area-similarity", options->min_area_similarity,
+                   "Area similarity a candidate must exceed to be chosen (0..1)")
+      ->capture_default_str();
+  command
+      ->add_option("--seed-stride", options->bdsp.seed_stride,
+                   "BDSP seeds every Nth detected segment (the paper: 2)")
+      ->capture_default_str();
+  command
+      ->add_option("--gradient-threshold", options->detector.gradient_threshold,
+                   "EDLines gradient threshold")
+      ->capture_default_str();
+  command
+      ->add_option("--anchor-threshold", options->detector.anchor_threshold,
+                   "EDLines anchor threshold")
+      ->capture_default_str();
+  command
+      ->add_option("--min-line-length", options->detector.min_line_length,
+                   "Shortest segment kept (px); <= 0: EDLines' own choice")
+      ->capture_default_str();
+}
+
+}  // namespace scbt::cli

@@ -1,0 +1,149 @@
+#include "scbt/geometry/polygon_io.h"
+
+#include <cerrno>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
+
+namespace scbt {
+namespace {
+
+// Longest line we accept; a polygon of this size is far beyond any real boundary.
+constexpr size_t kMaxLineLength = 1 << 20;
+constexpr long kMaxVertices = 100000;
+
+bool parse_double(const std::string& token, double* value) {
+  if (token.empty()) return false;
+  errno = 0;
+  char* end = nullptr;
+  *value = std::strtod(token.c_str(), &end);
+  return end == token.c_str() + token.size() && errno != ERANGE;
+}
+
+std::vector<std::string> split_whitespace(const std::string& line) {
+  std::vector<std::string> tokens;
+  std::istringstream stream(line);
+  std::string token;
+  while (stream >> token) tokens.push_back(token);
+  return tokens;
+}
+
+}  // namespace
+
+bool try_parse_polygon_line(const std::string& line, Polygon* polygon, std::string* error) {
+  auto fail = [&](const std::string& message) {
+    if (error) *error = message;
+    return false;
+  };
+  if (line.size() > kMaxLineLength) return fail("line longer than 1 MiB");
+  const std::vector<std::string> tokens = split_whitespace(line);
+  if (tokens.empty()) return fail("empty line");
+  char* end = nullptr;
+  errno = 0;
+  const long count = std::strtol(tokens[0].c_str(), &end, 10);
+  if (end != tokens[0].c_str() + tokens[0].size() || errno == ERANGE) {
+    return fail("vertex count '" + tokens[0] + "' is not an integer");
+  }
+  if (count < 0 || count > kMaxVertices) {
+    return fail("vertex count " + tokens[0] + " out of range");
+  }
+  const size_t expected = 1 + 2 * static_cast<size_t>(count);
+  if (tokens.size() != expected) {
+    return fail("vertex count " + tokens[0] + " needs " + std::to_string(2 * count) +
+                " coordinates, found " + std::to_string(tokens.size() - 1));
+  }
+  Polygon result;
+  result.reserve(count);
+  for (long i = 0; i < count; ++i) {
+    double x = 0, y = 0;
+    const std::string& tx = tokens[1 + 2 * i];
+    const std::string& ty = tokens[2 + 2 * i];
+    if (!parse_double(tx, &x)) return fail("coordinate '" + tx + "' is not a number");
+    if (!parse_double(ty, &y)) return fail("coordinate '" + ty + "' is not a number");
+    if (!std::isfinite(x) || !std::isfinite(y)) {
+      return fail("coordinate of vertex " + std::to_string(i + 1) + " is not finite");
+    }
+    result.emplace_back(x, y);
+  }
+  *polygon = std::move(result);
+  return true;
+}
+
+Polygon parse_polygon_line(const std::string& line) {
+  Polygon polygon;
+  std::string error;
+  if (!try_parse_polygon_line(line, &polygon, &error)) throw std::invalid_argument(error);
+  return polygon;
+}
+
+std::string format_polygon_line(const Polygon& polygon) {
+  std::string out = std::to_string(polygon.size());
+  char buffer[64];
+  for (const Point& p : polygon) {
+    std::snprintf(buffer, sizeof(buffer), " %.2f %.2f", p.x, p.y);
+    out += buffer;
+  }
+  return out;
+}
+
+Polygon parse_points_list(const std::string& text) {
+  Polygon polygon;
+  for (const std::string& token : split_whitespace(text)) {
+    const size_t comma = token.find(',');
+    double x = 0, y = 0;
+    if (comma == std::string::npos || !parse_double(token.substr(0, comma), &x) ||
+        !parse_double(token.substr(comma + 1), &y)) {
+      throw std::invalid_argument("point '" + token + "' is not of the form x,y");
+    }
+    if (!std::isfinite(x) || !std::isfinite(y)) {
+      throw std::invalid_argument("point '" + token + "' is not finite");
+    }
+    polygon.emplace_back(x, y);
+  }
+  return polygon;
+}
+
+std::vector<std::string> read_text_lines(const std::string& path) {
+  std::ifstream file(path);
+  if (!file) throw std::runtime_error(path + ": cannot open for reading");
+  std::vector<std::string> lines;
+  std::string line;
+  while (std::getline(file, line)) {
+    if (!line.empty() && line.back() == '\r') line.pop_back();
+    lines.push_back(std::move(line));
+  }
+  if (file.bad()) throw std::runtime_error(path + ": read error");
+  return lines;
+}
+
+Polygon read_first_polygon(const std::string& path) {
+  const std::vector<std::string> lines = read_text_lines(path);
+  if (lines.empty()) throw std::runtime_error(path + ": file is empty");
+  Polygon polygon;
+  std::string error;
+  if (!try_parse_polygon_line(lines[0], &polygon, &error)) {
+    throw std::runtime_error(path + ":1: " + error);
+  }
+  return polygon;
+}
+
+void check_boundary_polygon(const Polygon& polygon) {
+  for (size_t i = 0; i < polygon.size(); ++i) {
+    if (!std::isfinite(polygon[i].x) || !std::isfinite(polygon[i].y)) {
+      throw std::invalid_argument("polygon vertex " + std::to_string(i + 1) + " is not finite");
+    }
+  }
+  if (count_distinct_points(polygon) < 3) {
+    throw std::invalid_argument("polygon needs at least 3 distinct vertices");
+  }
+  if (count_distinct_points(polygon) != static_cast<int>(polygon.size())) {
+    throw std::invalid_argument("polygon repeats a vertex");
+  }
+  if (area(polygon) < 1.0) throw std::invalid_argument("polygon encloses no area");
+  if (!is_simple(polygon)) throw std::invalid_argument("polygon intersects itself");
+}
+
+}  // namespace scbt

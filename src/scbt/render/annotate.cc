@@ -1,0 +1,51 @@
+#include "scbt/render/annotate.h"
+
+#include <opencv2/imgproc.hpp>
+
+namespace scbt {
+
+void draw_polygon(cv::Mat* image, const Polygon& polygon, const cv::Scalar& color, int thickness) {
+  std::vector<cv::Point> points;
+  points.reserve(polygon.size());
+  for (const Point& p : polygon) points.emplace_back(cvRound(p.x), cvRound(p.y));
+  if (points.size() >= 2) {
+    cv::polylines(*image, points, true, color, thickness, cv::LINE_AA);
+  }
+}
+
+cv::Mat annotate_frame(const cv::Mat& frame, const TrackDebug& debug, const TrackResult& result,
+                       const std::string& status) {
+  cv::Mat canvas;
+  if (frame.channels() == 1) {
+    cv::cvtColor(frame, canvas, cv::COLOR_GRAY2BGR);
+  } else if (frame.channels() == 4) {
+    cv::cvtColor(frame, canvas, cv::COLOR_BGRA2BGR);
+  } else {
+    canvas = frame.clone();
+  }
+  for (const Segment& s : debug.detected) {
+    cv::line(canvas, s.a, s.b, cv::Scalar(150, 150, 150), 1, cv::LINE_AA);
+  }
+  const SegmentGraph& graph = debug.graph;
+  for (const GraphEdge& e : graph.edges) {
+    if (e.detected) continue;
+    cv::line(canvas, graph.vertices[e.u], graph.vertices[e.v], cv::Scalar(255, 120, 0), 1,
+             cv::LINE_AA);
+  }
+  for (const GraphEdge& e : graph.edges) {
+    if (!e.detected) continue;
+    cv::line(canvas, graph.vertices[e.u], graph.vertices[e.v], cv::Scalar(0, 0, 255), 2,
+             cv::LINE_AA);
+  }
+  const cv::Scalar boundary_color = result.held ? cv::Scalar(0, 128, 255) : cv::Scalar(0, 255, 255);
+  draw_polygon(&canvas, result.boundary, boundary_color, 2);
+  if (!status.empty()) {
+    cv::putText(canvas, status, {8, 20}, cv::FONT_HERSHEY_SIMPLEX, 0.5, cv::Scalar(0, 0, 0), 3,
+                cv::LINE_AA);
+    cv::putText(canvas, status, {8, 20}, cv::FONT_HERSHEY_SIMPLEX, 0.5, cv::Scalar(255, 255, 255),
+                1, cv::LINE_AA);
+  }
+  return canvas;
+}
+
+}  // namespace scbt

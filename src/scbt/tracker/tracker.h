@@ -1,0 +1,71 @@
+// The per-frame salient closed boundary tracker: detect -> filter -> gap fill -> BDSP -> choose.
+#pragma once
+
+#include <memory>
+#include <opencv2/core/mat.hpp>
+
+#include "scbt/geometry/polygon.h"
+#include "scbt/grouping/segment_graph.h"
+#include "scbt/tracker/tracker_options.h"
+
+namespace scbt {
+
+struct TrackResult {
+  Polygon boundary;              // the tracked boundary (the previous one when held)
+  bool held = false;             // no admissible candidate: the previous boundary was kept
+  double cost = 0.0;             // grouping cost Γ of the chosen cycle (Eq. 1)
+  double area_similarity = 0.0;  // Eq. 2 between the chosen cycle and the previous boundary
+  int num_detected = 0;          // segments from the line detector
+  int num_kept = 0;              // segments passing the distance filter
+  int num_vertices = 0;          // graph size
+  int num_edges = 0;
+  int num_candidates = 0;    // BDSP cycle candidates evaluated
+  double line_ms = 0.0;      // colour conversion + line detection
+  double grouping_ms = 0.0;  // filter + graph + BDSP + choice
+  double total_ms() const { return line_ms + grouping_ms; }
+};
+
+// What the last frame's grouping looked at, for drawing (paper Fig. 2).
+struct TrackDebug {
+  std::vector<Segment> detected;  // all detected segments
+  SegmentGraph graph;             // kept segments and generated gap fillers
+};
+
+class Tracker {
+ public:
+  // Throws std::invalid_argument when the options are invalid.
+  explicit Tracker(const TrackerOptions& options = {});
+  ~Tracker();
+  Tracker(Tracker&&) noexcept;
+  Tracker& operator=(Tracker&&) noexcept;
+
+  // Sets the initial boundary. Throws std::invalid_argument if the frame is empty or not 8-bit,
+  // or the polygon is not a usable boundary (see check_boundary_polygon) or leaves the frame.
+  void init(const cv::Mat& frame, const Polygon& polygon);
+
+  // Tracks the boundary into `frame` (8-bit grey, BGR or BGRA). Requires init().
+  TrackResult track(const cv::Mat& frame);
+
+  bool initialized() const { return !boundary_.empty(); }
+  const Polygon& boundary() const { return boundary_; }
+  const TrackerOptions& options() const { return options_; }
+  // Filled by track() when enabled; off by default to keep the hot path lean.
+  void set_keep_debug(bool keep) { keep_debug_ = keep; }
+  const TrackDebug& debug() const { return debug_; }
+
+ private:
+  TrackerOptions options_;
+  std::unique_ptr<LineDetector> detector_;
+  Polygon boundary_;
+  double boundary_area_ = 0.0;
+  cv::Size frame_size_;
+  cv::Mat gray_;
+  bool keep_debug_ = false;
+  TrackDebug debug_;
+};
+
+// Converts an 8-bit frame of 1, 3 or 4 channels to grey (no copy for grey input).
+// Throws std::invalid_argument for anything else.
+void to_gray(const cv::Mat& frame, cv::Mat* gray);
+
+}  // namespace scbt

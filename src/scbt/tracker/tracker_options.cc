@@ -1,0 +1,25 @@
+#include "scbt/tracker/tracker_options.h"
+
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+namespace scbt {
+
+void TrackerOptions::check() const {
+  detector.check();
+  if (!(filter_distance > 0.0 && filter_distance <= 1000.0)) {
+    throw std::invalid_argument("filter_distance must be in (0, 1000] pixels, got " +
+                                std::to_string(filter_distance));
+  }
+  if (!(min_area_similarity >= 0.0 && min_area_similarity < 1.0)) {
+    throw std::invalid_argument("min_area_similarity must be in [0, 1), got " +
+                                std::to_string(min_area_similarity));
+  }
+  if (bdsp.seed_stride < 1 || bdsp.seed_stride > 1000) {
+    throw std::invalid_argument("seed_stride must be in 1..1000, got " +
+                                std::to_string(bdsp.seed_stride));
+  }
+}
+
+}  // namespace scbt

@@ -1,0 +1,22 @@
+// Options of the boundary tracker. Defaults are the paper's values.
+#pragma once
+
+#include "scbt/grouping/bdsp.h"
+#include "scbt/lines/line_detector.h"
+
+namespace scbt {
+
+struct TrackerOptions {
+  LineDetectorOptions detector;
+  // A segment is kept when the mean distance of its endpoints and midpoint to the previous
+  // boundary is below this (pixels; §III-A: 20).
+  double filter_distance = 20.0;
+  // A candidate must have area similarity (Eq. 2) above this to be chosen (§II: 0.9).
+  double min_area_similarity = 0.9;
+  BdspOptions bdsp;
+
+  // Throws std::invalid_argument naming the first bad value.
+  void check() const;
+};
+
+}  // namespace scbt
