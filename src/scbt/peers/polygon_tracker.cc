@@ -1,0 +1,53 @@
+#include "scbt/peers/polygon_tracker.h"
+
+#include <stdexcept>
+
+#include "scbt/geometry/polygon_io.h"
+
+namespace scbt {
+namespace {
+
+class BdspTracker : public PolygonTracker {
+ public:
+  explicit BdspTracker(const TrackerOptions& options) : tracker_(options) {}
+  void init(const cv::Mat& frame, const Polygon& polygon) override {
+    tracker_.init(frame, polygon);
+  }
+  TrackResult track(const cv::Mat& frame) override { return tracker_.track(frame); }
+
+ private:
+  Tracker tracker_;
+};
+
+// The floor every tracker must beat: the initial polygon, never moved.
+class StaticTracker : public PolygonTracker {
+ public:
+  void init(const cv::Mat& frame, const Polygon& polygon) override {
+    cv::Mat gray;
+    to_gray(frame, &gray);  // same frame checks as every other tracker
+    check_boundary_polygon(polygon);
+    polygon_ = polygon;
+  }
+  TrackResult track(const cv::Mat&) override {
+    TrackResult result;
+    result.boundary = polygon_;
+    result.held = true;
+    return result;
+  }
+
+ private:
+  Polygon polygon_;
+};
+
+}  // namespace
+
+std::vector<std::string> polygon_tracker_names() { return {"bdsp", "static"}; }
+
+std::unique_ptr<PolygonTracker> make_polygon_tracker(const std::string& name,
+                                                     const TrackerOptions& options) {
+  if (name == "bdsp") return std::make_unique<BdspTracker>(options);
+  if (name == "static") return std::make_unique<StaticTracker>();
+  throw std::invalid_argument("unknown tracker '" + name + "'");
+}
+
+}  // namespace scbt

@@ -1,0 +1,33 @@
+// A common face for every tracker that turns frames into a boundary polygon: scbt's own BDSP
+// tracker and the peers users would otherwise pick (for side-by-side evaluation).
+#pragma once
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <opencv2/core/mat.hpp>
+
+#include "scbt/tracker/tracker.h"
+
+namespace scbt {
+
+class PolygonTracker {
+ public:
+  virtual ~PolygonTracker() = default;
+  // Same contract as Tracker::init: throws std::invalid_argument on a bad frame or polygon.
+  virtual void init(const cv::Mat& frame, const Polygon& polygon) = 0;
+  // result.boundary is always a polygon; result.held marks a frame where the tracker kept its
+  // previous answer. Peers fill the timing fields they can (grouping_ms = their whole time).
+  virtual TrackResult track(const cv::Mat& frame) = 0;
+};
+
+// Names accepted by make_polygon_tracker, in a stable order.
+std::vector<std::string> polygon_tracker_names();
+
+// "bdsp" (scbt, configured by `options`), "static" (the initial polygon held), and the peers.
+// Throws std::invalid_argument for an unknown name.
+std::unique_ptr<PolygonTracker> make_polygon_tracker(const std::string& name,
+                                                     const TrackerOptions& options = {});
+
+}  // namespace scbt
