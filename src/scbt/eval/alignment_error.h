@@ -4,6 +4,7 @@
 #include <opencv2/core/types.hpp>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "scbt/geometry/polygon.h"
 
@@ -22,5 +23,11 @@ bool is_scorable_polygon(const Polygon& polygon);
 
 // Share of `errors` strictly below `threshold` (0 for an empty list).
 double success_rate(const std::vector<double>& errors, double threshold);
+
+// E_AL of one line of a results file against the truth. A line that does not parse (count not
+// matching the coordinates, non-numeric or non-finite values, empty) or whose polygon is not
+// scorable is a failure: +infinity, with the reason in `note` when given (cleared otherwise).
+double alignment_error_of_line(const std::string& line, const Polygon& truth, cv::Size canvas,
+                               std::string* note = nullptr);
 
 }  // namespace scbt
