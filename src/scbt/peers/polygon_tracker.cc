@@ -3,6 +3,10 @@
 #include <stdexcept>
 
 #include "scbt/geometry/polygon_io.h"
+#include "scbt/peers/csrt_tracker.h"
+#include "scbt/peers/ecc_tracker.h"
+#include "scbt/peers/klt_tracker.h"
+#include "scbt/peers/rrc_tracker.h"
 
 namespace scbt {
 namespace {
@@ -41,11 +45,24 @@ class StaticTracker : public PolygonTracker {
 
 }  // namespace
 
-std::vector<std::string> polygon_tracker_names() { return {"bdsp", "static"}; }
+std::vector<std::string> polygon_tracker_names() {
+  return {"bdsp", "ecc", "klt", "csrt", "rrc", "static"};
+}
 
 std::unique_ptr<PolygonTracker> make_polygon_tracker(const std::string& name,
                                                      const TrackerOptions& options) {
   if (name == "bdsp") return std::make_unique<BdspTracker>(options);
+  if (name == "ecc") return std::make_unique<EccTracker>();
+  if (name == "klt") return std::make_unique<KltTracker>();
+  if (name == "csrt") return std::make_unique<CsrtTracker>();
+  if (name == "rrc") {
+    // The same line detector and distance filter as scbt's tracker, so only the grouping differs.
+    options.check();
+    RrcTrackerOptions rrc;
+    rrc.detector = options.detector;
+    rrc.filter_distance = options.filter_distance;
+    return std::make_unique<RrcTracker>(rrc);
+  }
   if (name == "static") return std::make_unique<StaticTracker>();
   throw std::invalid_argument("unknown tracker '" + name + "'");
 }

@@ -3,10 +3,9 @@
 #pragma once
 
 #include <memory>
+#include <opencv2/core/mat.hpp>
 #include <string>
 #include <vector>
-
-#include <opencv2/core/mat.hpp>
 
 #include "scbt/tracker/tracker.h"
 
@@ -25,7 +24,9 @@ class PolygonTracker {
 // Names accepted by make_polygon_tracker, in a stable order.
 std::vector<std::string> polygon_tracker_names();
 
-// "bdsp" (scbt, configured by `options`), "static" (the initial polygon held), and the peers.
+// "bdsp" (scbt, configured by `options`), the peers "ecc", "klt", "csrt" (ecc_tracker.h,
+// klt_tracker.h, csrt_tracker.h, default settings) and "rrc" (rrc_tracker.h, using the detector
+// and filter distance of `options`), and "static" (the initial polygon held).
 // Throws std::invalid_argument for an unknown name.
 std::unique_ptr<PolygonTracker> make_polygon_tracker(const std::string& name,
                                                      const TrackerOptions& options = {});
