@@ -1,10 +1,40 @@
+#include <iostream>
+
+#include "scbt/app/demo_run.h"
 #include "scbt/cli/commands.h"
 
 namespace scbt::cli {
 
 void add_demo_command(CLI::App& app, int* exit_code) {
-  CLI::App* command = app.add_subcommand("demo", "Track a built-in synthetic clip (placeholder)");
-  command->callback([exit_code] { *exit_code = 0; });
+  auto options = std::make_shared<DemoOptions>();
+  auto detector = std::make_shared<std::string>("edlines");
+  auto shape = std::make_shared<std::string>(to_string(options->scene.shape));
+  auto no_video = std::make_shared<bool>(false);
+  CLI::App* command = app.add_subcommand(
+      "demo",
+      "Render a synthetic clip (a textureless outline moving, rotating and scaling over clutter "
+      "and noise), track it from its known first outline and report the error against the truth");
+  command->add_option("-o,--out", options->out_dir, "Output folder")->capture_default_str();
+  command->add_option("--frames", options->frames, "Clip length in frames")->capture_default_str();
+  command->add_option("--seed", options->scene.seed, "Seed of the clutter, noise and shape")
+      ->capture_default_str();
+  command->add_option("--shape", *shape, "Tracked outline: rim (a cup rim), box or polygon")
+      ->capture_default_str();
+  command->add_option("--noise", options->scene.noise_sigma, "Gaussian noise sigma (grey levels)")
+      ->capture_default_str();
+  command->add_option("--clutter", options->scene.clutter_strokes, "Number of clutter strokes")
+      ->capture_default_str();
+  command->add_flag("--no-video", *no_video, "Do not write the annotated demo.avi");
+  command->add_flag("-q,--quiet", options->quiet, "No progress bar and no summary");
+  add_tracker_options(command, &options->tracker, detector.get());
+  command->callback([options, detector, shape, no_video, exit_code] {
+    options->tracker.detector.kind = parse_line_detector_kind(*detector);
+    options->scene.shape = parse_scene_shape(*shape);
+    options->video = !*no_video;
+    const DemoSummary summary = run_demo(*options, std::cerr);
+    if (!options->quiet) std::cout << format_demo_summary(summary) << std::flush;
+    *exit_code = 0;
+  });
 }
 
 }  // namespace scbt::cli

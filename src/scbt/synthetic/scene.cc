@@ -352,14 +352,18 @@ SceneFrame render_frame(const SceneOptions& options, const Pose& pose, int frame
   return render_frame(options, background, model, pose, frame_index);
 }
 
-std::vector<SceneFrame> render_clip(const SceneOptions& options, const std::vector<Pose>& poses) {
-  const Polygon model = object_model(options);
+cv::Rect2d path_region(const Polygon& model, const std::vector<Pose>& poses) {
   cv::Rect2d path;
   for (size_t i = 0; i < poses.size(); ++i) {
     const cv::Rect2d box = bounding_box(apply_pose(poses[i], model));
     path = i == 0 ? box : (path | box);
   }
-  const cv::Mat background = render_background(options, path);
+  return path;
+}
+
+std::vector<SceneFrame> render_clip(const SceneOptions& options, const std::vector<Pose>& poses) {
+  const Polygon model = object_model(options);
+  const cv::Mat background = render_background(options, path_region(model, poses));
   std::vector<SceneFrame> frames;
   frames.reserve(poses.size());
   for (size_t i = 0; i < poses.size(); ++i) {

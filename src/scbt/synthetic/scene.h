@@ -74,7 +74,12 @@ SceneFrame render_frame(const SceneOptions& options, const cv::Mat& background,
 // One frame on its own background (clutter near the object placed around its pose).
 SceneFrame render_frame(const SceneOptions& options, const Pose& pose, int frame_index = 0);
 
-// A clip: one frame per pose over one static background, clutter near the whole path.
+// The bounding box of the object's outline over all poses (empty for no poses).
+cv::Rect2d path_region(const Polygon& model, const std::vector<Pose>& poses);
+
+// A clip: one frame per pose over one static background, clutter near the whole path
+// (render_background(options, path_region(...)) then render_frame per pose). Holds every frame in
+// memory; long clips are better rendered frame by frame the same way.
 std::vector<SceneFrame> render_clip(const SceneOptions& options, const std::vector<Pose>& poses);
 
 struct MotionOptions {
