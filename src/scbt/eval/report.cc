@@ -1,5 +1,6 @@
 #include "scbt/eval/report.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -55,6 +56,19 @@ std::string fixed(double value, int decimals) {
   char buffer[64];
   std::snprintf(buffer, sizeof(buffer), "%.*f", decimals, value);
   return buffer;
+}
+
+// fps of trackers that do almost nothing (the static one) is meaningless beyond this.
+std::string fps_cell(double fps) { return fps > 10000.0 ? ">10000" : fixed(fps, 1); }
+
+// Rows grouped by sequence (in order of first appearance), trackers in their given order.
+std::vector<const SequenceScore*> by_sequence(std::vector<const SequenceScore*> rows) {
+  std::map<std::string, size_t> first;
+  for (const SequenceScore* s : rows) first.emplace(s->sequence, first.size());
+  std::stable_sort(rows.begin(), rows.end(), [&](const SequenceScore* a, const SequenceScore* b) {
+    return first[a->sequence] < first[b->sequence];
+  });
+  return rows;
 }
 
 void success_table(std::ostream& out, const std::vector<const SequenceScore*>& rows) {
@@ -240,7 +254,7 @@ void write_markdown_report(std::ostream& out, const std::vector<SequenceScore>& 
          "frames (missing or degenerate boundary) count as infinite error in S@e, the median and "
          "the AUC (area under the success curve over e = 0..50 px, normalised to 0..1; the "
          "best per sequence in bold).\n\n";
-  success_table(out, per_sequence);
+  success_table(out, by_sequence(per_sequence));
   if (!pooled.empty()) {
     out << "\n## All sequences pooled\n\nEvery frame of every sequence counted once.\n\n";
     success_table(out, pooled);
@@ -253,11 +267,11 @@ void write_markdown_report(std::ostream& out, const std::vector<SequenceScore>& 
            "tracker kept its previous boundary.\n\n"
            "| Sequence | Tracker | Edges | Nodes | lt (ms) | gt (ms) | Track (ms) | fps | Held |\n"
            "|---|---|---:|---:|---:|---:|---:|---:|---:|\n";
-    for (const SequenceScore* s : timed) {
+    for (const SequenceScore* s : by_sequence(timed)) {
       const TimingStats& t = s->timing;
       out << "| " << s->sequence << " | " << s->tracker << " | " << fixed(t.edges, 0) << " | "
           << fixed(t.nodes, 0) << " | " << fixed(t.line_ms, 2) << " | " << fixed(t.grouping_ms, 2)
-          << " | " << fixed(t.track_ms, 2) << " | " << fixed(t.fps, 1) << " | " << t.held << "/"
+          << " | " << fixed(t.track_ms, 2) << " | " << fps_cell(t.fps) << " | " << t.held << "/"
           << t.tracked << " |\n";
     }
   }

@@ -1,0 +1,50 @@
+// The body of `scbt eval`: run trackers over a dataset laid out like the public one and/or score
+// existing results files, then write the results, CSVs, Markdown report and success-curve plot.
+#pragma once
+
+#include <ostream>
+#include <string>
+#include <vector>
+
+#include "scbt/eval/report.h"
+#include "scbt/tracker/tracker_options.h"
+
+namespace scbt {
+
+struct EvalRunOptions {
+  std::string dataset;                 // DIR with OriginalVideosAVI/ and GroundTruthByPolygons/
+  std::vector<std::string> sequences;  // empty: all sequences of the dataset
+  // Trackers to run (names of make_polygon_tracker). Empty: all of them, unless `results` is
+  // given, in which case nothing is run.
+  std::vector<std::string> trackers;
+  // Existing results to score, "name=DIR" with DIR/<Seq>.txt (one polygon line per frame).
+  std::vector<std::string> results;
+  std::string out;         // output folder (created)
+  int jobs = 0;            // parallel jobs; 0: std::thread::hardware_concurrency()
+  int max_frames = 0;      // only the first N frames of each sequence (0: all), for quick runs
+  bool quiet = false;      // no progress on the log
+  bool plot = true;        // write success_curves.png
+  TrackerOptions tracker;  // for "bdsp" (and peers that use them)
+
+  // Throws std::invalid_argument naming the first bad value (no file system access).
+  void check() const;
+};
+
+struct EvalRunSummary {
+  std::vector<SequenceScore> scores;  // per (tracker, sequence), then the pooled rows
+  std::vector<std::string> files;     // everything written, report first
+  std::vector<std::string> warnings;
+  double seconds = 0.0;  // wall time of the whole run
+  int jobs = 0;          // (tracker, sequence) jobs
+  int threads = 0;
+};
+
+// A "name=DIR" results spec split in two. Throws std::invalid_argument if malformed.
+std::pair<std::string, std::string> parse_results_spec(const std::string& spec);
+
+// Runs everything. Bad options, an unknown tracker or sequence, or a dataset not laid out as
+// expected throw before any work starts. A job that fails (e.g. unreadable frame) does not stop
+// the others: the report is written for the rest, then std::runtime_error names the failures.
+EvalRunSummary run_eval(const EvalRunOptions& options, std::ostream& log);
+
+}  // namespace scbt

@@ -1,0 +1,73 @@
+#include <iostream>
+
+#include "scbt/app/eval_run.h"
+#include "scbt/cli/commands.h"
+#include "scbt/eval/dataset.h"
+#include "scbt/io/frame_source.h"
+#include "scbt/peers/polygon_tracker.h"
+
+namespace scbt::cli {
+namespace {
+
+// `scbt eval --list`: what the dataset and the tracker factory offer.
+void list_dataset(const EvalRunOptions& options) {
+  std::cout << "trackers:";
+  for (const std::string& name : polygon_tracker_names()) std::cout << ' ' << name;
+  std::cout << '\n';
+  if (options.dataset.empty()) return;
+  std::cout << "sequences of " << options.dataset << ":\n";
+  for (const DatasetSequence& s : list_dataset_sequences(options.dataset)) {
+    std::cout << "  " << s.name << "  (" << open_frame_source(s.frames)->frame_count()
+              << " frames)\n";
+  }
+}
+
+}  // namespace
+
+void add_eval_command(CLI::App& app, int* exit_code) {
+  auto options = std::make_shared<EvalRunOptions>();
+  auto detector = std::make_shared<std::string>("edlines");
+  auto list = std::make_shared<bool>(false);
+  auto no_plot = std::make_shared<bool>(false);
+  CLI::App* command = app.add_subcommand(
+      "eval",
+      "Run trackers over a dataset laid out like the public one (or score existing results) "
+      "and report E_AL success rates, AUC and timings, with success-curve plots");
+  command->add_option("--dataset", options->dataset,
+                      "Dataset folder: OriginalVideosAVI/<Seq>/NNNN.jpg and "
+                      "GroundTruthByPolygons/<Seq>_TrackingGroundTruth.txt");
+  command->add_option("--sequences", options->sequences, "Sequences to use (default: all)")
+      ->delimiter(',');
+  command
+      ->add_option("--trackers", options->trackers,
+                   "Trackers to run, comma separated (default: all, or none with --results)")
+      ->delimiter(',');
+  command->add_option("--results", options->results,
+                      "Score existing results instead of running: NAME=DIR with DIR/<Seq>.txt "
+                      "(one polygon line per frame); repeatable");
+  command->add_option("-o,--out", options->out,
+                      "Output folder: <tracker>/<Seq>.txt, report.md, summary.csv, frames.csv, "
+                      "curves.csv, success_curves.png");
+  command->add_option("-j,--jobs", options->jobs, "Parallel jobs (0: one per core)")
+      ->capture_default_str();
+  command->add_option("--max-frames", options->max_frames,
+                      "Only the first N frames of each sequence (0: all)");
+  command->add_flag("--no-plot", *no_plot, "Do not write success_curves.png");
+  command->add_flag("-q,--quiet", options->quiet, "No progress output");
+  command->add_flag("--list", *list, "List the trackers and the dataset's sequences, then exit");
+  add_tracker_options(command, &options->tracker, detector.get());
+  command->callback([options, detector, list, no_plot, exit_code] {
+    options->tracker.detector.kind = parse_line_detector_kind(*detector);
+    if (*list) {
+      list_dataset(*options);
+      *exit_code = 0;
+      return;
+    }
+    options->plot = !*no_plot;
+    const EvalRunSummary summary = run_eval(*options, std::cerr);
+    if (!options->quiet) std::cout << summary.files.front() << '\n';
+    *exit_code = 0;
+  });
+}
+
+}  // namespace scbt::cli
