@@ -63,10 +63,6 @@ void EccTrackerOptions::check() const {
   if (!(epsilon >= 0.0)) {
     throw std::invalid_argument("ecc epsilon must be >= 0, got " + std::to_string(epsilon));
   }
-  if (mask_erosion < 0) {
-    throw std::invalid_argument("ecc mask_erosion must be >= 0, got " +
-                                std::to_string(mask_erosion));
-  }
   if (gauss_filter_size < 1 || gauss_filter_size % 2 == 0) {
     throw std::invalid_argument("ecc gauss_filter_size must be odd and >= 1, got " +
                                 std::to_string(gauss_filter_size));
@@ -131,46 +127,55 @@ TrackResult EccTracker::track(const cv::Mat& frame) {
   if (ok) {
     cv::Mat input;
     gray(crop).convertTo(input, CV_32F);
-    // Only input pixels inside the previous boundary (shrunk by a few pixels) take part, so the
-    // background the template's bounding box also holds does not pull the warp.
-    cv::Mat mask = cv::Mat::zeros(crop.size(), CV_8U);
+    // Only input pixels inside the previous boundary (grown by a few pixels, to keep its edges)
+    // take part, so the background the template's bounding box also holds does not pull the warp.
+    cv::Mat mask(crop.size(), CV_8U, cv::Scalar(options_.mask_growth < 0 ? 255 : 0));
     std::vector<cv::Point> outline;
     for (const Point& p : boundary_)
       outline.emplace_back(cvRound(p.x - crop.x), cvRound(p.y - crop.y));
-    cv::fillPoly(mask, std::vector<std::vector<cv::Point>>{outline}, cv::Scalar(255));
-    if (options_.mask_erosion > 0) {
-      cv::erode(
+    if (options_.mask_growth >= 0)
+      cv::fillPoly(mask, std::vector<std::vector<cv::Point>>{outline}, cv::Scalar(255));
+    if (options_.mask_growth > 0) {
+      cv::dilate(
           mask, mask,
-          cv::getStructuringElement(cv::MORPH_ELLIPSE, cv::Size(2 * options_.mask_erosion + 1,
-                                                                2 * options_.mask_erosion + 1)));
+          cv::getStructuringElement(cv::MORPH_ELLIPSE, cv::Size(2 * options_.mask_growth + 1,
+                                                                2 * options_.mask_growth + 1)));
     }
-    try {
-      for (int level = static_cast<int>(templates_.size()) - 1; level >= 0; --level) {
-        const double s = scales_[level];
-        cv::Mat scaled_input, scaled_mask;
-        if (s == 1.0) {
-          scaled_input = input;
-          scaled_mask = mask;
-        } else {
-          cv::resize(input, scaled_input, cv::Size(), s, s, cv::INTER_AREA);
-          cv::resize(mask, scaled_mask, scaled_input.size(), 0, 0, cv::INTER_NEAREST);
-        }
-        if (scaled_input.cols < 4 || scaled_input.rows < 4) continue;
-        // Both images are resized by s, so the level's warp is L * W * L^-1.
-        const cv::Mat to_level = level_matrix(s);
-        const cv::Mat from_level = to_level.inv();
-        cv::Mat level_warp;
-        cv::Mat(to_level * warp * from_level).convertTo(level_warp, CV_32F);
+    // A coarse level that fails (ECC throws when the correlation would decrease) leaves the warp
+    // as it was; only a failure at the finest level holds the frame.
+    for (int level = static_cast<int>(templates_.size()) - 1; level >= 0; --level) {
+      ok = true;
+      const double s = scales_[level];
+      cv::Mat scaled_input, scaled_mask;
+      if (s == 1.0) {
+        scaled_input = input;
+        scaled_mask = mask;
+      } else {
+        cv::resize(input, scaled_input, cv::Size(), s, s, cv::INTER_AREA);
+        cv::resize(mask, scaled_mask, scaled_input.size(), 0, 0, cv::INTER_NEAREST);
+      }
+      if (scaled_input.cols < 4 || scaled_input.rows < 4) continue;
+      // Both images are resized by s, so the level's warp is L * W * L^-1.
+      const cv::Mat to_level = level_matrix(s);
+      const cv::Mat from_level = to_level.inv();
+      cv::Mat level_warp;
+      cv::Mat(to_level * warp * from_level).convertTo(level_warp, CV_32F);
+      try {
         cv::findTransformECC(templates_[level], scaled_input, level_warp, cv::MOTION_HOMOGRAPHY,
                              cv::TermCriteria(cv::TermCriteria::COUNT + cv::TermCriteria::EPS,
                                               options_.max_iterations, options_.epsilon),
                              scaled_mask, options_.gauss_filter_size);
-        cv::Mat refined;
-        level_warp.convertTo(refined, CV_64F);
-        warp = from_level * refined * to_level;
+      } catch (const cv::Exception&) {
+        ok = false;  // did not converge, or the warp became singular
+        continue;
       }
-    } catch (const cv::Exception&) {
-      ok = false;  // ECC did not converge (or the warp became singular): hold
+      cv::Mat refined;
+      level_warp.convertTo(refined, CV_64F);
+      if (!cv::checkRange(refined)) {
+        ok = false;
+        continue;
+      }
+      warp = from_level * refined * to_level;
     }
   }
 
