@@ -86,8 +86,9 @@ void draw_panel(cv::Mat& panel, const PlotPanel& data, const PlotOptions& option
   put_centred(panel, "E_AL threshold (px)", area.x + area.width / 2, panel.rows - 8, 0.48);
   put_vertical(panel, "success rate", 13, area.y + area.height / 2, 0.48);
 
-  // Curves, clipped to the plot area.
+  // Curves, clipped to the plot area; `ink` marks their pixels for placing the legend.
   cv::Mat plot = panel(area);
+  cv::Mat ink(area.size(), CV_8U, cv::Scalar(0));
   for (const PlotLine& line : data.lines) {
     std::vector<cv::Point> points;
     for (size_t i = 0; i < line.curve.thresholds.size() && i < line.curve.rates.size(); ++i) {
@@ -97,10 +98,12 @@ void draw_panel(cv::Mat& panel, const PlotPanel& data, const PlotOptions& option
     }
     if (points.size() >= 2) {
       cv::polylines(plot, points, false, plot_colour(colour_of.at(line.label)), 2, cv::LINE_AA);
+      cv::polylines(ink, points, false, cv::Scalar(255), 3);
     }
   }
 
-  // Legend in the lower right corner of the plot area.
+  // Legend: in the lower right corner of the plot area unless curves run there; then in the
+  // candidate place that hides the fewest curve pixels.
   if (data.lines.empty()) {
     put_centred(panel, "no data", area.x + area.width / 2, area.y + area.height / 2, 0.6);
     return;
@@ -114,9 +117,21 @@ void draw_panel(cv::Mat& panel, const PlotPanel& data, const PlotOptions& option
     labels.push_back(label);
   }
   const int row = 18, sample = 26;
-  const cv::Rect box(area.x + area.width - width - sample - 22,
-                     area.y + area.height - row * static_cast<int>(labels.size()) - 14,
-                     width + sample + 16, row * static_cast<int>(labels.size()) + 8);
+  const cv::Size size(width + sample + 16, row * static_cast<int>(labels.size()) + 8);
+  const int end_x = area.width - size.width - 6, middle_x = (area.width - size.width) / 2;
+  const int end_y = area.height - size.height - 6, middle_y = (area.height - size.height) / 2;
+  const cv::Point candidates[] = {
+      {end_x, end_y}, {end_x, middle_y}, {middle_x, end_y}, {middle_x, middle_y}};
+  cv::Rect box;
+  int best = -1;
+  for (const cv::Point& corner : candidates) {
+    const cv::Rect place = cv::Rect(corner, size) & cv::Rect(0, 0, area.width, area.height);
+    const int hidden = cv::countNonZero(ink(place));
+    if (best < 0 || hidden < best) {
+      best = hidden;
+      box = cv::Rect(corner + area.tl(), size);
+    }
+  }
   cv::Mat background = panel(box & cv::Rect(0, 0, panel.cols, panel.rows));
   cv::addWeighted(background, 0.15, cv::Mat(background.size(), background.type(), kWhite), 0.85,
                   0.0, background);
