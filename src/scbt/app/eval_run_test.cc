@@ -198,6 +198,28 @@ TEST_F(EvalRunTest, RejectsBadInputBeforeRunning) {
   EXPECT_FALSE(fs::exists(options_.out)) << "nothing written by a rejected run";
 }
 
+TEST_F(EvalRunTest, AFailedJobLeavesNoResultsButTheOthersAreReported) {
+  std::ofstream(root_ / "data" / "OriginalVideosAVI" / "Slide" / "0005.png") << "not a png";
+  options_.trackers = {"static"};
+  try {
+    run_eval(options_, std::cerr);
+    FAIL() << "a job with an undecodable frame did not fail the run";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find("1 of 2 jobs failed"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("0005.png"), std::string::npos) << e.what();
+  }
+  const fs::path out = options_.out;
+  EXPECT_FALSE(fs::exists(out / "static" / "Slide.txt")) << "partial results left behind";
+  EXPECT_TRUE(fs::exists(out / "static" / "Still.txt"));
+  std::ifstream csv(out / "summary.csv");
+  const std::vector<SequenceScore> scores = read_summary_csv(csv);
+  ASSERT_EQ(scores.size(), 1u) << "only Still is scored, and no pooled row over a failed job";
+  EXPECT_EQ(scores[0].sequence, "Still");
+  std::stringstream report;
+  report << std::ifstream(out / "report.md").rdbuf();
+  EXPECT_NE(report.str().find("FAILED: static/Slide"), std::string::npos) << report.str();
+}
+
 TEST_F(EvalRunTest, ProgressNamesEveryJob) {
   options_.trackers = {"static"};
   options_.quiet = false;

@@ -66,6 +66,28 @@ TEST(Plot, CurvesAreDrawnWhereTheirRatesAre) {
   EXPECT_GT(count_colour(image, second, bad_colour), 20);
 }
 
+TEST(Plot, LegendAvoidsTheCurves) {
+  // A curve flat at 0.1 runs through the lower right corner, where the legend goes by default;
+  // a curve at 0.9 keeps the top busy. The legend must move and leave the low curve visible.
+  SuccessCurve low, high;
+  for (int t = 0; t <= 50; ++t) {
+    low.thresholds.push_back(t);
+    low.rates.push_back(0.1);
+    high.thresholds.push_back(t);
+    high.rates.push_back(0.9);
+  }
+  PlotOptions options;
+  const cv::Mat image = render_success_curves({{"P", {{"low", low, 0.0}, {"high", high, 0.0}}}});
+  const int w = options.panel_width, h = options.panel_height;
+  // The right end of the plot area around rate 0.1 (the x axis is 48 px above the panel's bottom,
+  // the plot area 278 px high, so rate 0.1 is about 76 px above the bottom).
+  const cv::Rect corner(w - 140, h - 96, 110, 40);
+  // No legend text (black) nor legend frame (grey 160) there; the grid (grey 225) may be.
+  EXPECT_EQ(count_colour(image, corner, cv::Scalar(0, 0, 0)), 0) << "legend text in the corner";
+  EXPECT_EQ(count_colour(image, corner, cv::Scalar(160, 160, 160)), 0) << "legend frame there";
+  EXPECT_GT(count_colour(image, corner, plot_colour(0)), 100) << "the low curve is hidden";
+}
+
 TEST(Plot, RejectsBadOptions) {
   PlotOptions options;
   options.panel_width = 10;
