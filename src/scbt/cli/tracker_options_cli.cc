@@ -14,6 +14,11 @@ void add_tracker_options(CLI::App* command, TrackerOptions* options, std::string
                    "Area similarity a candidate must exceed to be chosen (0..1)")
       ->capture_default_str();
   command
+      ->add_option("--cost-tolerance", options->cost_tolerance,
+                   "Candidates within this fraction of the best cost count as tied; the one "
+                   "closest to the previous boundary wins (0: the paper's rule)")
+      ->capture_default_str();
+  command
       ->add_option("--seed-stride", options->bdsp.seed_stride,
                    "BDSP seeds every Nth detected segment (the paper: 2)")
       ->capture_default_str();

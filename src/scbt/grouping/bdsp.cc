@@ -67,10 +67,11 @@ std::vector<CycleCandidate> search_cycle_candidates(const SegmentGraph& graph,
       candidate.seed_edge = seed;
       candidate.vertices.assign(first_path.begin(), first_path.begin() + meet + 1);
       // Then back from the meeting vertex to s2 along the second path.
-      for (int v = from_second.parent_vertex(meeting); v != -1; v = from_second.parent_vertex(v)) {
-        candidate.vertices.push_back(v);
+      for (int v = meeting; v != s2; v = from_second.parent_vertex(v)) {
+        candidate.vertices.push_back(from_second.parent_vertex(v));
       }
       if (candidate.vertices.size() < 3) continue;
+      // The blocked seed edge weighs 0, so the gap is what the two paths add up to.
       candidate.gap_length = from_first.distance(meeting) + from_second.distance(meeting);
       candidate.area = cycle_area(graph, candidate.vertices);
       candidates.push_back(std::move(candidate));

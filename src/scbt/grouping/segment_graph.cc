@@ -62,7 +62,12 @@ SegmentGraph build_segment_graph(const std::vector<Segment>& detected) {
     const int v = vertex_id(s.b);
     if (u == v || !present.insert(edge_key(u, v)).second) continue;
     graph.detected_edges.push_back(graph.num_edges());
-    graph.edges.push_back({u, v, 0.0, true});
+    GraphEdge edge;
+    edge.u = u;
+    edge.v = v;
+    edge.length = cv::norm(s.b - s.a);
+    edge.detected = true;
+    graph.edges.push_back(edge);
   }
 
   if (graph.num_vertices() >= 2) {
@@ -76,7 +81,12 @@ SegmentGraph build_segment_graph(const std::vector<Segment>& detected) {
       const int u = e->first->vertex(Delaunay::cw(e->second))->info();
       const int v = e->first->vertex(Delaunay::ccw(e->second))->info();
       if (!present.insert(edge_key(u, v)).second) continue;
-      graph.edges.push_back({u, v, cv::norm(graph.vertices[u] - graph.vertices[v]), false});
+      GraphEdge edge;
+      edge.u = u;
+      edge.v = v;
+      edge.length = cv::norm(graph.vertices[u] - graph.vertices[v]);
+      edge.weight = edge.length;
+      graph.edges.push_back(edge);
     }
   }
   build_adjacency(&graph);

@@ -10,9 +10,11 @@ namespace scbt {
 struct GraphEdge {
   int u = 0;
   int v = 0;
-  // 0 for a detected segment; the Euclidean length for a generated (gap-filling) one (Eq. 3).
-  double weight = 0.0;
+  double length = 0.0;
   bool detected = false;
+  // Edge weight (Eq. 3) = the gap length |B_G| it contributes: 0 for a detected segment, its
+  // length for a generated (gap-filling) one.
+  double weight = 0.0;
 };
 
 // Undirected graph whose vertices are segment endpoints and whose edges are the detected and

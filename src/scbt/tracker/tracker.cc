@@ -89,8 +89,8 @@ TrackResult Tracker::track(const cv::Mat& frame) {
       filter_segments_near_boundary(detected, boundary_, options_.filter_distance);
   SegmentGraph graph = build_segment_graph(kept);
   const std::vector<CycleCandidate> candidates = search_cycle_candidates(graph, options_.bdsp);
-  const std::optional<BoundaryChoice> choice =
-      choose_boundary(candidates, boundary_area_, options_.min_area_similarity);
+  const std::optional<BoundaryChoice> choice = choose_boundary_stable(
+      candidates, graph, boundary_, options_.min_area_similarity, options_.cost_tolerance);
   if (choice) {
     boundary_ = candidate_polygon(graph, candidates[choice->index]);
     boundary_area_ = candidates[choice->index].area;

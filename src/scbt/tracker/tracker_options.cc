@@ -16,6 +16,10 @@ void TrackerOptions::check() const {
     throw std::invalid_argument("min_area_similarity must be in [0, 1), got " +
                                 std::to_string(min_area_similarity));
   }
+  if (!(cost_tolerance >= 0.0 && cost_tolerance <= 10.0)) {
+    throw std::invalid_argument("cost_tolerance must be in [0, 10], got " +
+                                std::to_string(cost_tolerance));
+  }
   if (bdsp.seed_stride < 1 || bdsp.seed_stride > 1000) {
     throw std::invalid_argument("seed_stride must be in 1..1000, got " +
                                 std::to_string(bdsp.seed_stride));

@@ -13,6 +13,10 @@ struct TrackerOptions {
   double filter_distance = 20.0;
   // A candidate must have area similarity (Eq. 2) above this to be chosen (§II: 0.9).
   double min_area_similarity = 0.9;
+  // Candidates within (1 + cost_tolerance) of the least cost Γ count as tied; the one closest to
+  // the previous boundary wins (choose_boundary_stable). 0 is the paper's rule. 0.1 stops the
+  // outward ratchet (inner -> outer rim -> table edges) that Γ alone allows.
+  double cost_tolerance = 0.1;
   BdspOptions bdsp;
 
   // Throws std::invalid_argument naming the first bad value.
