@@ -1,0 +1,226 @@
+// BDSP cycle candidates: structural properties on random graphs, and recovery of a known cycle.
+#include "scbt/grouping/bdsp.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <optional>
+#include <random>
+#include <set>
+#include <tuple>
+#include <utility>
+
+#include "scbt/grouping/boundary_choice.h"
+#include "scbt/grouping/segment_graph.h"
+
+namespace scbt {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+double cross(const Point& o, const Point& a, const Point& b) {
+  return (a.x - o.x) * (b.y - o.y) - (a.y - o.y) * (b.x - o.x);
+}
+bool properly_cross(const Segment& s, const Segment& t) {
+  const double d1 = cross(s.a, s.b, t.a), d2 = cross(s.a, s.b, t.b);
+  const double d3 = cross(t.a, t.b, s.a), d4 = cross(t.a, t.b, s.b);
+  return ((d1 > 0 && d2 < 0) || (d1 < 0 && d2 > 0)) && ((d3 > 0 && d4 < 0) || (d3 < 0 && d4 > 0));
+}
+
+// Short random segments in a 300 px square, none crossing an earlier one; some share endpoints.
+std::vector<Segment> random_segments(std::mt19937& rng, int count) {
+  std::uniform_real_distribution<double> pos(0.0, 300.0), len(5.0, 50.0), angle(-kPi, kPi);
+  std::uniform_int_distribution<int> coin(0, 3);
+  std::vector<Segment> segments;
+  for (int attempt = 0; static_cast<int>(segments.size()) < count && attempt < 50 * count;
+       ++attempt) {
+    Point a(pos(rng), pos(rng));
+    if (!segments.empty() && coin(rng) == 0) {
+      std::uniform_int_distribution<size_t> pick(0, segments.size() - 1);
+      a = segments[pick(rng)].b;
+    }
+    const double t = angle(rng);
+    const Segment s{a, a + Point(std::cos(t), std::sin(t)) * len(rng)};
+    if (std::none_of(segments.begin(), segments.end(),
+                     [&](const Segment& other) { return properly_cross(s, other); })) {
+      segments.push_back(s);
+    }
+  }
+  return segments;
+}
+
+// Edge index by unordered vertex pair.
+std::map<std::pair<int, int>, int> edge_index(const SegmentGraph& graph) {
+  std::map<std::pair<int, int>, int> index;
+  for (int i = 0; i < graph.num_edges(); ++i) {
+    const GraphEdge& e = graph.edges[i];
+    index[{std::min(e.u, e.v), std::max(e.u, e.v)}] = i;
+  }
+  return index;
+}
+
+double shoelace(const Polygon& p) {
+  double twice = 0.0;
+  for (size_t i = 0; i < p.size(); ++i) {
+    const Point& a = p[i];
+    const Point& b = p[(i + 1) % p.size()];
+    twice += a.x * b.y - b.x * a.y;
+  }
+  return 0.5 * twice;
+}
+
+class BdspProperty : public ::testing::TestWithParam<unsigned> {};
+
+TEST_P(BdspProperty, CandidatesAreSimpleCyclesClosedBySeed) {
+  std::mt19937 rng(GetParam() * 101u + 11u);
+  std::uniform_int_distribution<int> count(3, 30), stride(1, 3);
+  const SegmentGraph graph = build_segment_graph(random_segments(rng, count(rng)));
+  BdspOptions options;
+  options.seed_stride = stride(rng);
+  const std::vector<CycleCandidate> candidates = search_cycle_candidates(graph, options);
+  const auto index = edge_index(graph);
+  ASSERT_FALSE(candidates.empty());
+
+  std::set<int> allowed_seeds;
+  for (size_t k = 0; k < graph.detected_edges.size(); k += options.seed_stride) {
+    allowed_seeds.insert(graph.detected_edges[k]);
+  }
+  for (size_t c = 0; c < candidates.size(); ++c) {
+    SCOPED_TRACE("candidate " + std::to_string(c));
+    const CycleCandidate& candidate = candidates[c];
+    const std::vector<int>& cycle = candidate.vertices;
+    ASSERT_GE(cycle.size(), 3u);
+    EXPECT_EQ(std::set<int>(cycle.begin(), cycle.end()).size(), cycle.size()) << "a vertex repeats";
+    ASSERT_TRUE(allowed_seeds.count(candidate.seed_edge)) << "seed " << candidate.seed_edge;
+    const GraphEdge& seed = graph.edges[candidate.seed_edge];
+    EXPECT_TRUE(seed.detected);
+    // The closing pair (last, first) is the seed edge.
+    EXPECT_EQ(cycle.front(), seed.u);
+    EXPECT_EQ(cycle.back(), seed.v);
+
+    double gap = 0.0;
+    for (size_t i = 0; i < cycle.size(); ++i) {
+      const int u = cycle[i];
+      const int v = cycle[(i + 1) % cycle.size()];
+      ASSERT_GE(u, 0);
+      ASSERT_LT(u, graph.num_vertices());
+      const auto it = index.find({std::min(u, v), std::max(u, v)});
+      ASSERT_NE(it, index.end()) << "no edge " << u << "-" << v;
+      if (i + 1 == cycle.size()) {
+        EXPECT_EQ(it->second, candidate.seed_edge);
+      }
+      if (!graph.edges[it->second].detected) gap += graph.edges[it->second].length;
+    }
+    EXPECT_NEAR(candidate.gap_length, gap, 1e-9 * (1.0 + gap));
+    const Polygon polygon = candidate_polygon(graph, candidate);
+    ASSERT_EQ(polygon.size(), cycle.size());
+    for (size_t i = 0; i < cycle.size(); ++i) EXPECT_EQ(polygon[i], graph.vertices[cycle[i]]);
+    EXPECT_NEAR(candidate.area, std::abs(shoelace(polygon)), 1e-9 * (1.0 + candidate.area));
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(Seeds, BdspProperty, ::testing::Range(0u, 100u));
+
+// A regular n-gon whose every side is two detected segments separated by small gaps (at the side
+// middle and at each corner), surrounded by short distractor segments away from it.
+struct BrokenPolygonScene {
+  std::vector<Segment> segments;
+  std::set<std::pair<double, double>> boundary_points;  // endpoints of the boundary segments
+  Polygon outline;
+};
+
+BrokenPolygonScene broken_polygon(std::mt19937& rng, int sides) {
+  std::uniform_real_distribution<double> radius(60.0, 150.0), rotation(-kPi, kPi),
+      centre(200.0, 400.0), gap(1.0, 6.0), unit(0.0, 1.0), angle(-kPi, kPi);
+  BrokenPolygonScene scene;
+  const double r = radius(rng), phase = rotation(rng);
+  const Point c(centre(rng), centre(rng));
+  for (int i = 0; i < sides; ++i) {
+    const double t = phase + 2.0 * kPi * i / sides;
+    scene.outline.push_back(c + Point(std::cos(t), std::sin(t)) * r);
+  }
+  for (int i = 0; i < sides; ++i) {
+    const Point a = scene.outline[i];
+    const Point b = scene.outline[(i + 1) % sides];
+    const double length = cv::norm(b - a);
+    const Point dir = (b - a) * (1.0 / length);
+    const double g0 = gap(rng) / 2, g1 = gap(rng) / 2, g2 = gap(rng) / 2;
+    const double middle = length * (0.35 + 0.3 * unit(rng));
+    const Segment first{a + dir * g0, a + dir * (middle - g1)};
+    const Segment second{a + dir * (middle + g1), b - dir * g2};
+    for (const Segment& s : {first, second}) {
+      scene.segments.push_back(s);
+      scene.boundary_points.emplace(s.a.x, s.a.y);
+      scene.boundary_points.emplace(s.b.x, s.b.y);
+    }
+  }
+  // Distractors: short segments at least 25 px from the outline, inside or outside it.
+  std::uniform_real_distribution<double> pos(0.0, 600.0), len(3.0, 10.0);
+  int added = 0;
+  for (int attempt = 0; attempt < 2000 && added < 25; ++attempt) {
+    const Point a(pos(rng), pos(rng));
+    const double t = angle(rng);
+    const Segment s{a, a + Point(std::cos(t), std::sin(t)) * len(rng)};
+    if (distance_to_boundary(s.a, scene.outline) < 25.0 ||
+        distance_to_boundary(s.b, scene.outline) < 25.0) {
+      continue;
+    }
+    if (std::any_of(scene.segments.begin(), scene.segments.end(),
+                    [&](const Segment& other) { return properly_cross(s, other); })) {
+      continue;
+    }
+    scene.segments.push_back(s);
+    ++added;
+  }
+  std::shuffle(scene.segments.begin(), scene.segments.end(), rng);
+  return scene;
+}
+
+class BdspKnownCycle : public ::testing::TestWithParam<std::tuple<int, unsigned>> {};
+
+TEST_P(BdspKnownCycle, ChooseBoundaryReturnsTheBrokenPolygon) {
+  const auto [sides, seed] = GetParam();
+  std::mt19937 rng(seed * 7u + static_cast<unsigned>(sides));
+  const BrokenPolygonScene scene = broken_polygon(rng, sides);
+  const SegmentGraph graph = build_segment_graph(scene.segments);
+  const std::vector<CycleCandidate> candidates = search_cycle_candidates(graph, BdspOptions{});
+  const std::optional<BoundaryChoice> choice =
+      choose_boundary(candidates, area(scene.outline), 0.8);
+  ASSERT_TRUE(choice.has_value());
+  const CycleCandidate& chosen = candidates[choice->index];
+  std::set<std::pair<double, double>> chosen_points;
+  for (int v : chosen.vertices) chosen_points.emplace(graph.vertices[v].x, graph.vertices[v].y);
+  EXPECT_EQ(chosen_points, scene.boundary_points);
+  // Its gap is the sum of the small gaps between consecutive boundary segments.
+  EXPECT_LT(chosen.gap_length, 6.0 * 2 * sides);
+}
+
+INSTANTIATE_TEST_SUITE_P(Shapes, BdspKnownCycle,
+                         ::testing::Combine(::testing::Values(3, 4, 6, 8),
+                                            ::testing::Range(0u, 15u)));
+
+TEST(Bdsp, NoCandidatesWithoutCycles) {
+  // One detected segment: the only other path between its endpoints would be the segment itself.
+  EXPECT_TRUE(search_cycle_candidates(build_segment_graph({{{0, 0}, {10, 0}}})).empty());
+  EXPECT_TRUE(search_cycle_candidates(build_segment_graph({})).empty());
+}
+
+TEST(Bdsp, TriangleOfSegments) {
+  // Three sides of a triangle, all detected and touching: one cycle of gap 0.
+  const SegmentGraph graph =
+      build_segment_graph({{{0, 0}, {40, 0}}, {{40, 0}, {0, 30}}, {{0, 30}, {0, 0}}});
+  BdspOptions options;
+  options.seed_stride = 1;
+  const std::vector<CycleCandidate> candidates = search_cycle_candidates(graph, options);
+  ASSERT_FALSE(candidates.empty());
+  for (const CycleCandidate& c : candidates) {
+    EXPECT_EQ(c.vertices.size(), 3u);
+    EXPECT_EQ(c.gap_length, 0.0);
+    EXPECT_DOUBLE_EQ(c.area, 600.0);
+  }
+}
+
+}  // namespace
+}  // namespace scbt

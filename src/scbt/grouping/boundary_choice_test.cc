@@ -1,0 +1,228 @@
+// The tracking criterion (Eq. 1-2), the stabilised choice and the boundary distance.
+#include "scbt/grouping/boundary_choice.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+#include <random>
+
+namespace scbt {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+TEST(BoundaryChoice, GroupingCostAndAreaSimilarity) {
+  EXPECT_DOUBLE_EQ(grouping_cost(10.0, 200.0), 0.05);
+  EXPECT_DOUBLE_EQ(grouping_cost(0.0, 200.0), 0.0);
+  EXPECT_TRUE(std::isinf(grouping_cost(10.0, 0.0)));
+  EXPECT_DOUBLE_EQ(area_similarity(100.0, 80.0), 0.8);
+  EXPECT_DOUBLE_EQ(area_similarity(80.0, 100.0), 0.8);
+  EXPECT_DOUBLE_EQ(area_similarity(50.0, 50.0), 1.0);
+  EXPECT_EQ(area_similarity(0.0, 50.0), 0.0);
+  EXPECT_EQ(area_similarity(50.0, 0.0), 0.0);
+
+  std::mt19937 rng(99);
+  std::uniform_real_distribution<double> area_dist(1.0, 1e5), gap_dist(0.0, 500.0);
+  for (int i = 0; i < 200; ++i) {
+    const double a = area_dist(rng), b = area_dist(rng), g = gap_dist(rng);
+    const double s = area_similarity(a, b);
+    EXPECT_GT(s, 0.0);
+    EXPECT_LE(s, 1.0);
+    EXPECT_DOUBLE_EQ(s, area_similarity(b, a));
+    EXPECT_DOUBLE_EQ(s, std::min(a, b) / std::max(a, b));
+    EXPECT_DOUBLE_EQ(grouping_cost(g, a), g / a);
+  }
+}
+
+std::vector<CycleCandidate> random_candidates(std::mt19937& rng, int count) {
+  std::uniform_real_distribution<double> area_dist(100.0, 2000.0), gap_dist(0.0, 100.0);
+  std::vector<CycleCandidate> candidates(count);
+  for (CycleCandidate& c : candidates) {
+    c.area = area_dist(rng);
+    c.gap_length = gap_dist(rng);
+  }
+  return candidates;
+}
+
+class ChooseBoundaryProperty : public ::testing::TestWithParam<unsigned> {};
+
+TEST_P(ChooseBoundaryProperty, MinimumCostAmongAdmissible) {
+  std::mt19937 rng(GetParam() * 17u + 1u);
+  std::uniform_int_distribution<int> count(0, 30);
+  std::uniform_real_distribution<double> previous_dist(100.0, 2000.0), min_sim(0.0, 0.99);
+  const std::vector<CycleCandidate> candidates = random_candidates(rng, count(rng));
+  const double previous = previous_dist(rng), min_similarity = min_sim(rng);
+
+  int expected = -1, admissible = 0;
+  double best_cost = std::numeric_limits<double>::infinity();
+  for (int i = 0; i < static_cast<int>(candidates.size()); ++i) {
+    const double s =
+        std::min(previous, candidates[i].area) / std::max(previous, candidates[i].area);
+    if (!(s > min_similarity)) continue;
+    ++admissible;
+    const double cost = candidates[i].gap_length / candidates[i].area;
+    if (cost < best_cost) {
+      best_cost = cost;
+      expected = i;
+    }
+  }
+  const std::optional<BoundaryChoice> choice =
+      choose_boundary(candidates, previous, min_similarity);
+  if (expected < 0) {
+    EXPECT_FALSE(choice.has_value());
+    return;
+  }
+  ASSERT_TRUE(choice.has_value());
+  EXPECT_EQ(choice->index, expected);
+  EXPECT_DOUBLE_EQ(choice->cost, best_cost);
+  EXPECT_DOUBLE_EQ(choice->similarity, area_similarity(previous, candidates[expected].area));
+  EXPECT_EQ(choice->num_admissible, admissible);
+}
+
+INSTANTIATE_TEST_SUITE_P(Seeds, ChooseBoundaryProperty, ::testing::Range(0u, 200u));
+
+TEST(BoundaryChoice, NoneQualifies) {
+  std::vector<CycleCandidate> candidates(2);
+  candidates[0].area = 50.0;   // similarity 0.5
+  candidates[1].area = 400.0;  // similarity 0.25
+  EXPECT_FALSE(choose_boundary(candidates, 100.0, 0.9).has_value());
+  EXPECT_FALSE(choose_boundary({}, 100.0, 0.0).has_value());
+  // The gate is strict: similarity exactly at the bound does not qualify.
+  EXPECT_FALSE(choose_boundary(candidates, 100.0, 0.5).has_value());
+  EXPECT_TRUE(choose_boundary(candidates, 100.0, 0.49).has_value());
+}
+
+TEST(BoundaryChoice, TieGoesToTheMoreSimilar) {
+  std::vector<CycleCandidate> candidates(2);
+  candidates[0].area = 90.0;
+  candidates[0].gap_length = 0.0;
+  candidates[1].area = 100.0;
+  candidates[1].gap_length = 0.0;
+  const auto choice = choose_boundary(candidates, 100.0, 0.5);
+  ASSERT_TRUE(choice);
+  EXPECT_EQ(choice->index, 1);
+}
+
+// A regular n-gon of circumradius r around c.
+Polygon regular(int n, Point c, double r, double phase = 0.0) {
+  Polygon p;
+  for (int i = 0; i < n; ++i) {
+    const double t = phase + 2.0 * kPi * i / n;
+    p.push_back(c + Point(std::cos(t), std::sin(t)) * r);
+  }
+  return p;
+}
+
+// A graph holding the polygons' vertices, each polygon a candidate with the given gap.
+struct HandMade {
+  SegmentGraph graph;
+  std::vector<CycleCandidate> candidates;
+  void add(const Polygon& polygon, double gap) {
+    CycleCandidate c;
+    for (const Point& p : polygon) {
+      c.vertices.push_back(graph.num_vertices());
+      graph.vertices.push_back(p);
+    }
+    c.gap_length = gap;
+    c.area = area(polygon);
+    candidates.push_back(c);
+  }
+};
+
+TEST(ChooseBoundaryStable, ZeroToleranceIsThePaperRule) {
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<double> pos(100.0, 300.0), radius(20.0, 80.0), gap(0.0, 50.0),
+      min_sim(0.0, 0.95);
+  std::uniform_int_distribution<int> sides(3, 12), count(1, 12);
+  for (int round = 0; round < 100; ++round) {
+    HandMade made;
+    const int n = count(rng);
+    for (int i = 0; i < n; ++i) {
+      made.add(regular(sides(rng), Point(pos(rng), pos(rng)), radius(rng)), gap(rng));
+    }
+    const Polygon previous = regular(sides(rng), Point(pos(rng), pos(rng)), radius(rng));
+    const double s = min_sim(rng);
+    const auto plain = choose_boundary(made.candidates, area(previous), s);
+    const auto stable = choose_boundary_stable(made.candidates, made.graph, previous, s, 0.0);
+    ASSERT_EQ(plain.has_value(), stable.has_value());
+    if (plain) {
+      EXPECT_EQ(plain->index, stable->index);
+      EXPECT_EQ(plain->cost, stable->cost);
+      EXPECT_EQ(plain->num_admissible, stable->num_admissible);
+    }
+  }
+}
+
+TEST(ChooseBoundaryStable, NearTiePicksTheCandidateClosestToThePrevious) {
+  const Polygon previous = regular(4, Point(200, 200), 70.0, kPi / 4);
+  HandMade made;
+  // Candidate 0: moved 30 px, slightly cheaper. Candidate 1: moved 2 px, 5% more expensive.
+  made.add(regular(4, Point(230, 200), 70.0, kPi / 4), 10.0);
+  made.add(regular(4, Point(202, 200), 70.0, kPi / 4), 10.5);
+  // Candidate 2: right where the previous one was, but far more expensive.
+  made.add(previous, 20.0);
+  // Candidate 3: free and in place, but far too small to pass the similarity gate.
+  made.add(regular(4, Point(200, 200), 20.0, kPi / 4), 0.0);
+
+  const auto paper = choose_boundary_stable(made.candidates, made.graph, previous, 0.9, 0.0);
+  ASSERT_TRUE(paper);
+  EXPECT_EQ(paper->index, 0);
+  const auto tight = choose_boundary_stable(made.candidates, made.graph, previous, 0.9, 0.01);
+  ASSERT_TRUE(tight);
+  EXPECT_EQ(tight->index, 0);  // 5% is not within 1%
+  const auto loose = choose_boundary_stable(made.candidates, made.graph, previous, 0.9, 0.1);
+  ASSERT_TRUE(loose);
+  EXPECT_EQ(loose->index, 1);
+  EXPECT_DOUBLE_EQ(loose->cost, 10.5 / made.candidates[1].area);
+  const auto wide = choose_boundary_stable(made.candidates, made.graph, previous, 0.9, 2.0);
+  ASSERT_TRUE(wide);
+  EXPECT_EQ(wide->index, 2);  // within 3x of the best cost and not moved at all
+  // The similarity gate still applies: against a previous boundary of 4x the area nothing
+  // qualifies, however wide the tolerance.
+  const Polygon big = regular(4, Point(200, 200), 140.0, kPi / 4);
+  EXPECT_FALSE(choose_boundary_stable(made.candidates, made.graph, big, 0.9, 2.0).has_value());
+}
+
+TEST(BoundaryDistance, IdentitySymmetryAndTranslation) {
+  std::mt19937 rng(77);
+  std::uniform_real_distribution<double> pos(-100.0, 100.0), radius(5.0, 60.0), angle(-kPi, kPi),
+      shift(0.5, 8.0);
+  std::uniform_int_distribution<int> sides(3, 16);
+  for (int round = 0; round < 100; ++round) {
+    const Polygon a = regular(sides(rng), Point(pos(rng), pos(rng)), radius(rng), angle(rng));
+    const Polygon b = regular(sides(rng), Point(pos(rng), pos(rng)), radius(rng), angle(rng));
+    EXPECT_NEAR(boundary_distance(a, a), 0.0, 1e-9);
+    EXPECT_DOUBLE_EQ(boundary_distance(a, b), boundary_distance(b, a));
+    EXPECT_GE(boundary_distance(a, b), 0.0);
+    // Reversing the vertex order or adding vertices on the edges is the same polyline.
+    const Polygon reversed(a.rbegin(), a.rend());
+    EXPECT_NEAR(boundary_distance(a, reversed), 0.0, 1e-9);
+    // Translating by t moves every point by |t|: the distance is at most |t|.
+    const double t_angle = angle(rng), t_length = shift(rng);
+    const Point t(std::cos(t_angle) * t_length, std::sin(t_angle) * t_length);
+    Polygon moved;
+    for (const Point& p : a) moved.push_back(p + t);
+    EXPECT_LE(boundary_distance(a, moved), t_length + 1e-9);
+    EXPECT_GT(boundary_distance(a, moved), 0.0);
+  }
+}
+
+TEST(BoundaryDistance, LargeShapesMatchTheirContinuousLimit) {
+  // A fine polygonal circle of radius R shifted by |t| << R: the distance at angle theta is about
+  // |t| |cos theta|, whose mean over the circle is 2 |t| / pi.
+  const Polygon circle = regular(256, Point(0, 0), 300.0);
+  for (double d : {1.0, 3.0, 6.0}) {
+    for (double direction : {0.0, 0.7, 2.0}) {
+      const Point t(std::cos(direction) * d, std::sin(direction) * d);
+      Polygon moved;
+      for (const Point& p : circle) moved.push_back(p + t);
+      EXPECT_NEAR(boundary_distance(circle, moved), 2.0 * d / kPi, 0.05 * d);
+    }
+    // Concentric circles d apart: the distance is d.
+    EXPECT_NEAR(boundary_distance(circle, regular(256, Point(0, 0), 300.0 + d)), d, 0.01 * d);
+  }
+}
+
+}  // namespace
+}  // namespace scbt

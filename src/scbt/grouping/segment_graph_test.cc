@@ -1,0 +1,260 @@
+// Structural properties of the gap-filled segment graph over random non-crossing segment sets.
+#include "scbt/grouping/segment_graph.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <queue>
+#include <random>
+#include <set>
+#include <utility>
+
+namespace scbt {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+// Proper crossing by the exact-sign cross products, written here independently of polygon.cc.
+double cross(const Point& o, const Point& a, const Point& b) {
+  return (a.x - o.x) * (b.y - o.y) - (a.y - o.y) * (b.x - o.x);
+}
+bool properly_cross(const Point& p1, const Point& p2, const Point& q1, const Point& q2) {
+  const double d1 = cross(p1, p2, q1), d2 = cross(p1, p2, q2);
+  const double d3 = cross(q1, q2, p1), d4 = cross(q1, q2, p2);
+  return ((d1 > 0 && d2 < 0) || (d1 < 0 && d2 > 0)) && ((d3 > 0 && d4 < 0) || (d3 < 0 && d4 > 0));
+}
+
+// Short random segments, each rejected if it crosses an earlier one. About a third start at an
+// endpoint of an earlier segment, so that chains (shared vertices) occur.
+std::vector<Segment> random_segments(std::mt19937& rng, int count) {
+  std::uniform_real_distribution<double> pos(0.0, 400.0), len(5.0, 60.0), angle(-kPi, kPi);
+  std::uniform_int_distribution<int> coin(0, 2);
+  std::vector<Segment> segments;
+  int attempts = 0;
+  while (static_cast<int>(segments.size()) < count && attempts++ < 100 * count) {
+    Point a(pos(rng), pos(rng));
+    if (!segments.empty() && coin(rng) == 0) {
+      std::uniform_int_distribution<size_t> pick(0, segments.size() - 1);
+      const Segment& s = segments[pick(rng)];
+      a = coin(rng) == 0 ? s.a : s.b;
+    }
+    const double t = angle(rng);
+    const Segment candidate{a, a + Point(std::cos(t), std::sin(t)) * len(rng)};
+    bool ok = true;
+    for (const Segment& s : segments) {
+      if (properly_cross(candidate.a, candidate.b, s.a, s.b)) {
+        ok = false;
+        break;
+      }
+    }
+    if (ok) segments.push_back(candidate);
+  }
+  return segments;
+}
+
+size_t count_distinct(const std::vector<Segment>& segments) {
+  std::set<std::pair<double, double>> points;
+  for (const Segment& s : segments) {
+    points.emplace(s.a.x, s.a.y);
+    points.emplace(s.b.x, s.b.y);
+  }
+  return points.size();
+}
+
+void expect_adjacency_consistent(const SegmentGraph& graph) {
+  const int n = graph.num_vertices();
+  ASSERT_EQ(graph.adjacency_begin.size(), static_cast<size_t>(n + 1));
+  EXPECT_EQ(graph.adjacency_begin.front(), 0);
+  EXPECT_EQ(graph.adjacency_begin.back(), 2 * graph.num_edges());
+  ASSERT_EQ(graph.adjacency.size(), static_cast<size_t>(2 * graph.num_edges()));
+  std::vector<int> seen(graph.num_edges(), 0);
+  for (int v = 0; v < n; ++v) {
+    ASSERT_LE(graph.adjacency_begin[v], graph.adjacency_begin[v + 1]);
+    for (int k = graph.adjacency_begin[v]; k < graph.adjacency_begin[v + 1]; ++k) {
+      const SegmentGraph::Incidence& inc = graph.adjacency[k];
+      ASSERT_GE(inc.edge, 0);
+      ASSERT_LT(inc.edge, graph.num_edges());
+      const GraphEdge& e = graph.edges[inc.edge];
+      // The incidence is listed at one endpoint and names the other.
+      EXPECT_TRUE((e.u == v && e.v == inc.vertex) || (e.v == v && e.u == inc.vertex));
+      ++seen[inc.edge];
+    }
+  }
+  for (int i = 0; i < graph.num_edges(); ++i) EXPECT_EQ(seen[i], 2) << "edge " << i;
+}
+
+bool connected(const SegmentGraph& graph) {
+  if (graph.num_vertices() == 0) return true;
+  std::vector<bool> visited(graph.num_vertices(), false);
+  std::queue<int> queue;
+  queue.push(0);
+  visited[0] = true;
+  int count = 1;
+  while (!queue.empty()) {
+    const int u = queue.front();
+    queue.pop();
+    for (const GraphEdge& e : graph.edges) {  // deliberately not via the CSR under test
+      int w = -1;
+      if (e.u == u) w = e.v;
+      if (e.v == u) w = e.u;
+      if (w >= 0 && !visited[w]) {
+        visited[w] = true;
+        ++count;
+        queue.push(w);
+      }
+    }
+  }
+  return count == graph.num_vertices();
+}
+
+class SegmentGraphProperty : public ::testing::TestWithParam<unsigned> {};
+
+TEST_P(SegmentGraphProperty, StructureOfRandomNonCrossingSegments) {
+  std::mt19937 rng(GetParam() * 97u + 3u);
+  std::uniform_int_distribution<int> count(2, 40);
+  const std::vector<Segment> segments = random_segments(rng, count(rng));
+  ASSERT_GE(segments.size(), 2u);
+  const SegmentGraph graph = build_segment_graph(segments);
+
+  EXPECT_EQ(static_cast<size_t>(graph.num_vertices()), count_distinct(segments));
+  // Every vertex is an endpoint, and every endpoint maps to exactly one vertex.
+  std::map<std::pair<double, double>, int> id;
+  for (int v = 0; v < graph.num_vertices(); ++v) {
+    EXPECT_TRUE(id.emplace(std::make_pair(graph.vertices[v].x, graph.vertices[v].y), v).second);
+  }
+
+  std::set<std::pair<int, int>> undirected;
+  int num_generated = 0;
+  for (const GraphEdge& e : graph.edges) {
+    ASSERT_GE(e.u, 0);
+    ASSERT_LT(e.u, graph.num_vertices());
+    ASSERT_GE(e.v, 0);
+    ASSERT_LT(e.v, graph.num_vertices());
+    EXPECT_NE(e.u, e.v) << "self loop";
+    EXPECT_TRUE(undirected.emplace(std::min(e.u, e.v), std::max(e.u, e.v)).second)
+        << "duplicate edge " << e.u << "-" << e.v;
+    const double length = cv::norm(graph.vertices[e.u] - graph.vertices[e.v]);
+    EXPECT_NEAR(e.length, length, 1e-9);
+    if (e.detected) {
+      EXPECT_EQ(e.weight, 0.0);
+    } else {
+      EXPECT_NEAR(e.weight, length, 1e-9);
+      ++num_generated;
+    }
+  }
+
+  // Every detected segment is present, in input order, as a detected edge of weight 0.
+  ASSERT_EQ(graph.detected_edges.size(), segments.size());
+  for (size_t k = 0; k < segments.size(); ++k) {
+    const GraphEdge& e = graph.edges[graph.detected_edges[k]];
+    EXPECT_TRUE(e.detected);
+    EXPECT_EQ(e.weight, 0.0);
+    const int a = id.at({segments[k].a.x, segments[k].a.y});
+    const int b = id.at({segments[k].b.x, segments[k].b.y});
+    EXPECT_TRUE((e.u == a && e.v == b) || (e.u == b && e.v == a));
+  }
+  const int num_detected_flags = static_cast<int>(std::count_if(
+      graph.edges.begin(), graph.edges.end(), [](const GraphEdge& e) { return e.detected; }));
+  EXPECT_EQ(num_detected_flags, static_cast<int>(segments.size()));
+
+  // Generated edges are Delaunay edges: a plane graph, at most 3V - 6 of them (V >= 3).
+  for (int i = 0; i < graph.num_edges(); ++i) {
+    if (graph.edges[i].detected) continue;
+    for (int j = i + 1; j < graph.num_edges(); ++j) {
+      if (graph.edges[j].detected) continue;
+      const GraphEdge& e = graph.edges[i];
+      const GraphEdge& f = graph.edges[j];
+      EXPECT_FALSE(properly_cross(graph.vertices[e.u], graph.vertices[e.v], graph.vertices[f.u],
+                                  graph.vertices[f.v]))
+          << "generated edges " << i << " and " << j << " cross";
+    }
+  }
+  if (graph.num_vertices() >= 3) {
+    EXPECT_LE(num_generated, 3 * graph.num_vertices() - 6);
+  }
+  EXPECT_GT(num_generated, 0);
+
+  EXPECT_TRUE(connected(graph));
+  expect_adjacency_consistent(graph);
+}
+
+INSTANTIATE_TEST_SUITE_P(Seeds, SegmentGraphProperty, ::testing::Range(0u, 100u));
+
+TEST(SegmentGraph, MergesCoincidentEndpointsAndDropsDegenerateSegments) {
+  const std::vector<Segment> segments{
+      {{0, 0}, {10, 0}},     // 0
+      {{10, 0}, {10, 10}},   // shares (10, 0)
+      {{10, 0}, {0, 0}},     // repeat of the first, reversed: dropped
+      {{0, 0}, {10, 0}},     // repeat of the first: dropped
+      {{20, 20}, {20, 20}},  // zero length: dropped
+      {{10, 10}, {0, 10}},
+  };
+  const SegmentGraph graph = build_segment_graph(segments);
+  ASSERT_EQ(graph.detected_edges.size(), 3u);
+  // (0,0), (10,0), (10,10), (0,10) are shared by the three kept segments.
+  const GraphEdge& first = graph.edges[graph.detected_edges[0]];
+  const GraphEdge& second = graph.edges[graph.detected_edges[1]];
+  const GraphEdge& third = graph.edges[graph.detected_edges[2]];
+  EXPECT_EQ(graph.vertices[first.u], Point(0, 0));
+  EXPECT_EQ(graph.vertices[first.v], Point(10, 0));
+  EXPECT_EQ(second.u, first.v);  // merged vertex
+  EXPECT_EQ(third.u, second.v);
+  EXPECT_EQ(graph.vertices[third.v], Point(0, 10));
+  for (const GraphEdge& e : graph.edges) EXPECT_NE(e.u, e.v);
+  // The fourth side of the square is a generated edge of weight 10.
+  bool found_gap = false;
+  for (const GraphEdge& e : graph.edges) {
+    if (std::min(e.u, e.v) == first.u && std::max(e.u, e.v) == third.v) {
+      found_gap = true;
+      EXPECT_FALSE(e.detected);
+      EXPECT_DOUBLE_EQ(e.weight, 10.0);
+    }
+  }
+  EXPECT_TRUE(found_gap);
+  expect_adjacency_consistent(graph);
+}
+
+TEST(SegmentGraph, EmptyAndSingleSegment) {
+  const SegmentGraph empty = build_segment_graph({});
+  EXPECT_EQ(empty.num_vertices(), 0);
+  EXPECT_EQ(empty.num_edges(), 0);
+  ASSERT_EQ(empty.adjacency_begin.size(), 1u);
+
+  const SegmentGraph one = build_segment_graph({{{1, 2}, {3, 4}}});
+  EXPECT_EQ(one.num_vertices(), 2);
+  ASSERT_EQ(one.num_edges(), 1);  // the Delaunay edge coincides with the segment
+  EXPECT_TRUE(one.edges[0].detected);
+  expect_adjacency_consistent(one);
+}
+
+TEST(SegmentGraph, CollinearEndpointsStayConnected) {
+  // Three collinear segments with gaps: the triangulation degenerates to a chain.
+  const SegmentGraph graph =
+      build_segment_graph({{{0, 0}, {10, 0}}, {{20, 0}, {30, 0}}, {{40, 0}, {50, 0}}});
+  EXPECT_EQ(graph.num_vertices(), 6);
+  EXPECT_EQ(graph.num_edges(), 5);
+  EXPECT_TRUE(connected(graph));
+  double gap = 0.0;
+  for (const GraphEdge& e : graph.edges) gap += e.weight;
+  EXPECT_DOUBLE_EQ(gap, 20.0);
+}
+
+TEST(BuildAdjacency, HandMadeGraph) {
+  SegmentGraph graph;
+  graph.vertices = {{0, 0}, {1, 0}, {2, 0}, {3, 0}};
+  graph.edges.resize(3);
+  graph.edges[0].u = 0;
+  graph.edges[0].v = 1;
+  graph.edges[1].u = 2;
+  graph.edges[1].v = 1;
+  graph.edges[2].u = 0;
+  graph.edges[2].v = 2;
+  build_adjacency(&graph);
+  expect_adjacency_consistent(graph);
+  EXPECT_EQ(graph.adjacency_begin, (std::vector<int>{0, 2, 4, 6, 6}));  // vertex 3 isolated
+}
+
+}  // namespace
+}  // namespace scbt

@@ -1,0 +1,158 @@
+// Dijkstra with a blocked edge against Bellman-Ford on random small graphs.
+#include "scbt/grouping/shortest_paths.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+#include <random>
+
+namespace scbt {
+namespace {
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+GraphEdge make_edge(int u, int v, double weight, bool detected) {
+  GraphEdge e;
+  e.u = u;
+  e.v = v;
+  e.length = weight;
+  e.detected = detected;
+  e.weight = weight;
+  return e;
+}
+
+// Random multigraph of n vertices and m edges; weights are 0 (detected) or random lengths.
+SegmentGraph random_graph(std::mt19937& rng, int n, int m) {
+  SegmentGraph graph;
+  std::uniform_real_distribution<double> pos(0.0, 100.0), weight(0.0, 50.0);
+  std::uniform_int_distribution<int> vertex(0, n - 1), coin(0, 3);
+  for (int i = 0; i < n; ++i) graph.vertices.emplace_back(pos(rng), pos(rng));
+  for (int i = 0; i < m; ++i) {
+    GraphEdge e;
+    e.u = vertex(rng);
+    do {
+      e.v = vertex(rng);
+    } while (e.v == e.u);
+    e.detected = coin(rng) == 0;
+    e.weight = e.detected ? 0.0 : weight(rng);
+    e.length = e.weight;
+    if (e.detected) graph.detected_edges.push_back(i);
+    graph.edges.push_back(e);
+  }
+  build_adjacency(&graph);
+  return graph;
+}
+
+std::vector<double> bellman_ford(const SegmentGraph& graph, int source, int blocked) {
+  std::vector<double> d(graph.num_vertices(), kInf);
+  d[source] = 0.0;
+  for (int round = 0; round < graph.num_vertices(); ++round) {
+    bool changed = false;
+    for (int i = 0; i < graph.num_edges(); ++i) {
+      if (i == blocked) continue;
+      const GraphEdge& e = graph.edges[i];
+      if (d[e.u] + e.weight < d[e.v]) {
+        d[e.v] = d[e.u] + e.weight;
+        changed = true;
+      }
+      if (d[e.v] + e.weight < d[e.u]) {
+        d[e.u] = d[e.v] + e.weight;
+        changed = true;
+      }
+    }
+    if (!changed) break;
+  }
+  return d;
+}
+
+class ShortestPathsProperty : public ::testing::TestWithParam<unsigned> {};
+
+TEST_P(ShortestPathsProperty, MatchesBellmanFordAndParentsSumToDistance) {
+  std::mt19937 rng(GetParam() * 13u + 5u);
+  std::uniform_int_distribution<int> size(2, 30);
+  const int n = size(rng);
+  std::uniform_int_distribution<int> edges(1, 3 * n);
+  const SegmentGraph graph = random_graph(rng, n, edges(rng));
+  std::uniform_int_distribution<int> vertex(0, n - 1);
+  std::uniform_int_distribution<int> edge(-1, graph.num_edges() - 1);
+
+  ShortestPaths paths;  // reused across runs, as BDSP does
+  for (int run = 0; run < 5; ++run) {
+    const int source = vertex(rng);
+    const int blocked = edge(rng);
+    paths.run(graph, source, blocked);
+    const std::vector<double> expected = bellman_ford(graph, source, blocked);
+    EXPECT_EQ(paths.parent_edge(source), -1);
+    EXPECT_EQ(paths.distance(source), 0.0);
+    for (int v = 0; v < n; ++v) {
+      SCOPED_TRACE("vertex " + std::to_string(v));
+      ASSERT_EQ(paths.reached(v), std::isfinite(expected[v]));
+      if (!paths.reached(v)) continue;
+      EXPECT_NEAR(paths.distance(v), expected[v], 1e-9);
+      // Walk the parent chain back to the source, summing weights; it never uses the blocked
+      // edge and each step follows a real edge.
+      double sum = 0.0;
+      int steps = 0;
+      for (int w = v; w != source; w = paths.parent_vertex(w)) {
+        ASSERT_LT(steps++, n) << "parent chain loops";
+        const int e = paths.parent_edge(w);
+        ASSERT_GE(e, 0);
+        EXPECT_NE(e, blocked);
+        const GraphEdge& edge_w = graph.edges[e];
+        const int p = paths.parent_vertex(w);
+        EXPECT_TRUE((edge_w.u == w && edge_w.v == p) || (edge_w.v == w && edge_w.u == p));
+        sum += edge_w.weight;
+      }
+      EXPECT_NEAR(sum, paths.distance(v), 1e-9);
+    }
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(Seeds, ShortestPathsProperty, ::testing::Range(0u, 150u));
+
+SegmentGraph triangle() {
+  // 0 -1- 1 -1- 2, and a direct 0-2 edge of weight 0 (detected).
+  SegmentGraph graph;
+  graph.vertices = {{0, 0}, {1, 0}, {2, 0}};
+  graph.edges.resize(3);
+  graph.edges[0] = make_edge(0, 1, 1.0, false);
+  graph.edges[1] = make_edge(1, 2, 1.0, false);
+  graph.edges[2] = make_edge(0, 2, 0.0, true);
+  build_adjacency(&graph);
+  return graph;
+}
+
+TEST(ShortestPaths, BlockedEdgeIsNotUsed) {
+  const SegmentGraph graph = triangle();
+  ShortestPaths paths;
+  paths.run(graph, 0, -1);
+  EXPECT_EQ(paths.distance(2), 0.0);
+  EXPECT_EQ(paths.parent_edge(2), 2);
+  paths.run(graph, 0, 2);
+  EXPECT_EQ(paths.distance(2), 2.0);
+  EXPECT_EQ(paths.parent_vertex(2), 1);
+  EXPECT_EQ(paths.parent_edge(2), 1);
+  // Blocking the only edge to a vertex leaves it unreached.
+  paths.run(graph, 1, 0);
+  EXPECT_TRUE(paths.reached(0));  // through 2
+  EXPECT_EQ(paths.distance(0), 1.0);
+}
+
+TEST(ShortestPaths, UnreachableVertex) {
+  SegmentGraph graph;
+  graph.vertices = {{0, 0}, {1, 0}, {5, 5}};
+  graph.edges.resize(1);
+  graph.edges[0] = make_edge(0, 1, 1.0, false);
+  build_adjacency(&graph);
+  ShortestPaths paths;
+  paths.run(graph, 0, -1);
+  EXPECT_TRUE(paths.reached(1));
+  EXPECT_FALSE(paths.reached(2));
+  EXPECT_TRUE(std::isinf(paths.distance(2)));
+  paths.run(graph, 0, 0);
+  EXPECT_FALSE(paths.reached(1));
+}
+
+}  // namespace
+}  // namespace scbt
