@@ -36,15 +36,17 @@ void add_eval_command(CLI::App& app, int* exit_code) {
   command->add_option("--dataset", options->dataset,
                       "Dataset folder: OriginalVideosAVI/<Seq>/NNNN.jpg and "
                       "GroundTruthByPolygons/<Seq>_TrackingGroundTruth.txt");
-  command->add_option("--sequences", options->sequences, "Sequences to use (default: all)")
+  command
+      ->add_option("--sequences", options->sequences,
+                   "Sequences to use, comma separated (default: all)")
       ->delimiter(',');
   command
       ->add_option("--trackers", options->trackers,
                    "Trackers to run, comma separated (default: all, or none with --results)")
       ->delimiter(',');
   command->add_option("--results", options->results,
-                      "Score existing results instead of running: NAME=DIR with DIR/<Seq>.txt "
-                      "(one polygon line per frame); repeatable");
+                      "Score existing results: NAME=DIR with DIR/<Seq>.txt (one polygon line per "
+                      "frame); repeatable. Nothing is run unless --trackers is also given");
   command->add_option("-o,--out", options->out,
                       "Output folder: <tracker>/<Seq>.txt, report.md, summary.csv, frames.csv, "
                       "curves.csv, success_curves.png");

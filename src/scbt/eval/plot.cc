@@ -118,10 +118,14 @@ void draw_panel(cv::Mat& panel, const PlotPanel& data, const PlotOptions& option
   }
   const int row = 18, sample = 26;
   const cv::Size size(width + sample + 16, row * static_cast<int>(labels.size()) + 8);
-  const int end_x = area.width - size.width - 6, middle_x = (area.width - size.width) / 2;
-  const int end_y = area.height - size.height - 6, middle_y = (area.height - size.height) / 2;
-  const cv::Point candidates[] = {
-      {end_x, end_y}, {end_x, middle_y}, {middle_x, end_y}, {middle_x, middle_y}};
+  // Nine places (corners, edge middles, centre), the lower right first: the first of those
+  // hiding the fewest curve pixels wins.
+  const int xs[] = {area.width - size.width - 6, (area.width - size.width) / 2, 6};
+  const int ys[] = {area.height - size.height - 6, (area.height - size.height) / 2, 6};
+  std::vector<cv::Point> candidates;
+  for (int y : ys) {
+    for (int x : xs) candidates.emplace_back(x, y);
+  }
   cv::Rect box;
   int best = -1;
   for (const cv::Point& corner : candidates) {
