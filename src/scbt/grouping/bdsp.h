@@ -23,8 +23,10 @@ struct BdspOptions {
 // For every sampled detected edge e_i = (s1, s2): block e_i, find shortest paths from s1 and s2,
 // and for every other detected edge e_j close the cycle e_i + path(s1 -> v_j) + path(v_j -> s2)
 // through its first endpoint v_j. Where the two paths merge before v_j, the shared tail is cut
-// off so that every candidate is a cycle that visits each vertex once. Candidates that repeat an
-// earlier one of the same seed, or have fewer than three vertices, are skipped.
+// off so that every candidate is a cycle that visits each vertex once. A third vertex whose paths
+// meet where an earlier one's did (same cycle) is skipped, as are cycles of fewer than three
+// vertices; other repeats of a cycle can remain (they carry identical gap and area, so they never
+// change the choice).
 std::vector<CycleCandidate> search_cycle_candidates(const SegmentGraph& graph,
                                                     const BdspOptions& options = {});
 
