@@ -1,0 +1,49 @@
+#include "scbt/tracker/motion_estimate.h"
+
+#include <gtest/gtest.h>
+
+#include <opencv2/imgproc.hpp>
+#include <random>
+
+namespace scbt {
+namespace {
+
+// A random smooth texture, so that every shift is well defined.
+cv::Mat random_texture(cv::Size size, unsigned seed) {
+  cv::Mat noise(size, CV_8U);
+  cv::RNG rng(seed);
+  rng.fill(noise, cv::RNG::UNIFORM, 0, 256);
+  cv::GaussianBlur(noise, noise, cv::Size(0, 0), 2.0);
+  cv::normalize(noise, noise, 0, 255, cv::NORM_MINMAX);
+  return noise;
+}
+
+TEST(EstimateTranslation, RecoversIntegerShiftsOfATexture) {
+  std::mt19937 rng(7);
+  std::uniform_int_distribution<int> shift(-25, 25);
+  for (int trial = 0; trial < 30; ++trial) {
+    const cv::Mat scene = random_texture({320, 320}, 100 + trial);
+    const int dx = shift(rng), dy = shift(rng);
+    const cv::Rect window(80, 80, 160, 160);
+    const cv::Mat reference = scene(window);
+    // The content moves by (dx, dy): the current window sees the scene at window - shift.
+    const cv::Mat current = scene(window - cv::Point(dx, dy));
+    const std::optional<TranslationEstimate> estimate = estimate_translation(reference, current);
+    ASSERT_TRUE(estimate.has_value());
+    EXPECT_NEAR(estimate->shift.x, dx, 0.5) << "trial " << trial;
+    EXPECT_NEAR(estimate->shift.y, dy, 0.5) << "trial " << trial;
+    EXPECT_GT(estimate->response, 0.2);
+  }
+}
+
+TEST(EstimateTranslation, RejectsMismatchedOrTinyImages) {
+  const cv::Mat a = random_texture({64, 64}, 1);
+  EXPECT_FALSE(estimate_translation(a, a(cv::Rect(0, 0, 32, 64)).clone()).has_value());
+  EXPECT_FALSE(estimate_translation(a(cv::Rect(0, 0, 8, 8)), a(cv::Rect(8, 8, 8, 8))).has_value());
+  cv::Mat color;
+  cv::cvtColor(a, color, cv::COLOR_GRAY2BGR);
+  EXPECT_FALSE(estimate_translation(color, color).has_value());
+}
+
+}  // namespace
+}  // namespace scbt
