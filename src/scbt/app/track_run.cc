@@ -1,5 +1,9 @@
 #include "scbt/app/track_run.h"
 
+#include <signal.h>
+
+#include <csignal>
+#include <cstring>
 #include <filesystem>
 #include <memory>
 #include <opencv2/imgcodecs.hpp>
@@ -17,6 +21,48 @@ namespace scbt {
 namespace fs = std::filesystem;
 namespace {
 
+// Set by the handler; read once per frame by the tracking loop.
+volatile std::sig_atomic_t g_stop_signal = 0;
+
+extern "C" void on_stop_signal(int signal_number) { g_stop_signal = signal_number; }
+
+// Installs on_stop_signal for SIGINT and SIGTERM for its lifetime, then restores the old handlers.
+class StopSignalScope {
+ public:
+  explicit StopSignalScope(bool enabled) : enabled_(enabled) {
+    g_stop_signal = 0;
+    if (!enabled_) return;
+    struct sigaction action {};
+    action.sa_handler = on_stop_signal;
+    sigemptyset(&action.sa_mask);
+    sigaction(SIGINT, &action, &old_int_);
+    sigaction(SIGTERM, &action, &old_term_);
+  }
+  ~StopSignalScope() {
+    if (!enabled_) return;
+    sigaction(SIGINT, &old_int_, nullptr);
+    sigaction(SIGTERM, &old_term_, nullptr);
+  }
+  StopSignalScope(const StopSignalScope&) = delete;
+  StopSignalScope& operator=(const StopSignalScope&) = delete;
+
+ private:
+  bool enabled_;
+  struct sigaction old_int_ {};
+  struct sigaction old_term_ {};
+};
+
+const char* signal_name(int signal_number) {
+  switch (signal_number) {
+    case SIGINT:
+      return "SIGINT";
+    case SIGTERM:
+      return "SIGTERM";
+    default:
+      return "a signal";
+  }
+}
+
 int video_fourcc(const std::string& path) {
   const std::string ext = fs::path(path).extension().string();
   if (ext == ".mp4" || ext == ".m4v") return cv::VideoWriter::fourcc('m', 'p', '4', 'v');
@@ -25,19 +71,64 @@ int video_fourcc(const std::string& path) {
 
 void write_csv_header(std::ostream& csv) {
   csv << "frame,held,cost,area_similarity,detected,kept,vertices,edges,candidates,line_ms,"
-         "grouping_ms,total_ms\n";
+         "grouping_ms,total_ms,note\n";
 }
 
-void write_csv_row(std::ostream& csv, int frame, const TrackResult& r) {
+// The note is free text: quoted, with inner quotes doubled, when it holds a comma or quote.
+std::string csv_field(const std::string& text) {
+  if (text.find_first_of(",\"\n") == std::string::npos) return text;
+  std::string quoted = "\"";
+  for (char c : text) {
+    if (c == '\n') c = ' ';
+    quoted += c;
+    if (c == '"') quoted += '"';
+  }
+  return quoted + '"';
+}
+
+void write_csv_row(std::ostream& csv, int frame, const TrackResult& r, const std::string& note) {
   char line[256];
-  std::snprintf(line, sizeof(line), "%d,%d,%.6g,%.6g,%d,%d,%d,%d,%d,%.4f,%.4f,%.4f\n", frame,
+  std::snprintf(line, sizeof(line), "%d,%d,%.6g,%.6g,%d,%d,%d,%d,%d,%.4f,%.4f,%.4f,", frame,
                 r.held ? 1 : 0, r.cost, r.area_similarity, r.num_detected, r.num_kept,
                 r.num_vertices, r.num_edges, r.num_candidates, r.line_ms, r.grouping_ms,
                 r.total_ms());
-  csv << line;
+  csv << line << csv_field(note) << '\n';
+}
+
+// Why a frame was hard, in words, for the CSV's note column ("" for an ordinary frame).
+std::string frame_note(const TrackResult& r, const cv::Size& size) {
+  std::string note;
+  auto add = [&note](const std::string& text) { note += (note.empty() ? "" : "; ") + text; };
+  if (r.num_dropped > 0) {
+    add("segments capped: " + std::to_string(r.num_dropped) + " of " +
+        std::to_string(r.num_kept + r.num_dropped) + " near the boundary dropped");
+  }
+  if (r.held) {
+    if (r.num_detected == 0) {
+      add("held: no segments detected");
+    } else if (r.num_kept == 0) {
+      add("held: no segments near the boundary");
+    } else if (r.num_candidates == 0) {
+      add("held: no closed cycle among the segments");
+    } else {
+      add("held: every candidate rejected");
+    }
+  }
+  int outside = 0;
+  for (const Point& p : r.boundary) {
+    outside += (p.x < 0 || p.y < 0 || p.x > size.width || p.y > size.height) ? 1 : 0;
+  }
+  if (outside > 0) add(std::to_string(outside) + " boundary vertices outside the frame");
+  return note;
 }
 
 }  // namespace
+
+BadFramePolicy parse_bad_frame_policy(const std::string& name) {
+  if (name == "hold") return BadFramePolicy::kHold;
+  if (name == "stop") return BadFramePolicy::kStop;
+  throw std::invalid_argument("--on-bad-frame must be hold or stop, got '" + name + "'");
+}
 
 Polygon load_initial_polygon(const TrackRunOptions& options) {
   if (options.init_file.empty() == options.init_points.empty()) {
@@ -53,6 +144,10 @@ Polygon load_initial_polygon(const TrackRunOptions& options) {
 
 TrackSummary run_track(const TrackRunOptions& options, std::ostream& log) {
   if (options.output.empty()) throw std::invalid_argument("--output is required");
+  if (options.max_frames < 0) {
+    throw std::invalid_argument("--max-frames must be >= 0, got " +
+                                std::to_string(options.max_frames));
+  }
   const Polygon initial = load_initial_polygon(options);
   Tracker tracker(options.tracker);
   std::unique_ptr<FrameSource> source = open_frame_source(options.input);
@@ -62,7 +157,11 @@ TrackSummary run_track(const TrackRunOptions& options, std::ostream& log) {
   try {
     tracker.init(frame, initial);
   } catch (const std::invalid_argument& e) {
-    throw std::invalid_argument(std::string("initial polygon: ") + e.what());
+    // Named by where the polygon came from: a file's content (exit 1) or the command line (2).
+    const std::string detail = std::string("initial polygon: ") + e.what() + " (first frame " +
+                               source->current_name() + ")";
+    if (!options.init_file.empty()) throw std::runtime_error(options.init_file + ":1: " + detail);
+    throw std::invalid_argument("--init-points: " + detail);
   }
   const bool annotate = !options.video.empty() || !options.frames_out.empty();
   tracker.set_keep_debug(annotate);
@@ -80,6 +179,8 @@ TrackSummary run_track(const TrackRunOptions& options, std::ostream& log) {
   results.stream() << format_polygon_line(initial) << '\n';
   TrackSummary summary;
   summary.frames = 1;
+  summary.expected_frames = source->frame_count();
+  const StopSignalScope signal_scope(options.handle_signals);
   double total_ms = 0.0;
   ProgressBar progress(log, "tracking", source->frame_count(), !options.quiet);
 
@@ -110,10 +211,37 @@ TrackSummary run_track(const TrackRunOptions& options, std::ostream& log) {
       first.boundary = initial;
       emit_annotation(annotate_frame(frame, {}, first, "frame 1: initial boundary"), 1);
     }
-    while ((options.max_frames <= 0 || summary.frames < options.max_frames) &&
-           source->read(&frame)) {
-      const TrackResult r = tracker.track(frame);
+    while (options.max_frames <= 0 || summary.frames < options.max_frames) {
+      if (g_stop_signal != 0) break;
+      // A frame that cannot be decoded or does not fit (size, pixel format) is bad: reported,
+      // and either held (its line repeats the boundary) or fatal, by policy.
+      std::string bad;
+      TrackResult r;
+      try {
+        if (!source->read(&frame)) break;
+        r = tracker.track(frame);
+      } catch (const std::runtime_error& e) {
+        bad = e.what();
+      } catch (const std::invalid_argument& e) {
+        bad = source->current_name() + ": " + e.what();
+      }
       ++summary.frames;
+      if (!bad.empty()) {
+        if (options.on_bad_frame == BadFramePolicy::kStop) {
+          throw std::runtime_error(bad + " (frame " + std::to_string(summary.frames) +
+                                   "; --on-bad-frame=stop)");
+        }
+        ++summary.bad_frames;
+        if (!options.quiet) log << '\n';
+        log << "scbt: warning: " << bad << " (frame " << summary.frames << "); boundary held\n";
+        r = TrackResult();
+        r.boundary = tracker.boundary();
+        r.held = true;
+        results.stream() << format_polygon_line(r.boundary) << '\n';
+        if (csv) write_csv_row(csv->stream(), summary.frames, r, "bad frame: " + bad);
+        progress.update(summary.frames);
+        continue;
+      }
       ++summary.tracked;
       summary.held += r.held ? 1 : 0;
       summary.mean_line_ms += r.line_ms;
@@ -122,7 +250,7 @@ TrackSummary run_track(const TrackRunOptions& options, std::ostream& log) {
       summary.mean_edges += r.num_edges;
       total_ms += r.total_ms();
       results.stream() << format_polygon_line(r.boundary) << '\n';
-      if (csv) write_csv_row(csv->stream(), summary.frames, r);
+      if (csv) write_csv_row(csv->stream(), summary.frames, r, frame_note(r, frame.size()));
       if (annotate) {
         char status[160];
         std::snprintf(status, sizeof(status), "frame %d  %s  %.2f ms  cost %.4f  sim %.3f",
@@ -140,6 +268,7 @@ TrackSummary run_track(const TrackRunOptions& options, std::ostream& log) {
     throw;
   }
   progress.finish(summary.frames);
+  summary.stop_signal = g_stop_signal;
 
   if (summary.tracked > 0) {
     const double n = summary.tracked;
@@ -154,6 +283,15 @@ TrackSummary run_track(const TrackRunOptions& options, std::ostream& log) {
   if (video) {
     video->release();
     fs::rename(video_temporary, options.video);
+  }
+  if (summary.stop_signal != 0) {
+    log << "scbt: warning: interrupted by " << signal_name(summary.stop_signal) << " after frame "
+        << summary.frames;
+    if (summary.expected_frames > 0) log << " of " << summary.expected_frames;
+    log << "; " << options.output << " holds frames 1.." << summary.frames << "\n";
+  }
+  if (summary.bad_frames > 0) {
+    log << "scbt: warning: " << summary.bad_frames << " bad frame(s) reported and held\n";
   }
   if (!options.quiet) log << format_summary(summary);
   return summary;

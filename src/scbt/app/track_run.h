@@ -8,6 +8,13 @@
 
 namespace scbt {
 
+// What `scbt track` does with a frame that cannot be decoded or does not fit the sequence (size
+// change, unusable pixel format): report it on `log`, hold the boundary and go on, or stop.
+enum class BadFramePolicy { kHold, kStop };
+
+// Parses "hold" / "stop". Throws std::invalid_argument naming the value.
+BadFramePolicy parse_bad_frame_policy(const std::string& name);
+
 struct TrackRunOptions {
   std::string input;        // video file, image folder or camera index
   std::string init_file;    // polygon file; its first line is the initial boundary
@@ -18,6 +25,10 @@ struct TrackRunOptions {
   std::string frames_out;   // optional folder of annotated frames
   bool quiet = false;       // no progress bar and no summary
   int max_frames = 0;       // stop after this many frames (0: all)
+  BadFramePolicy on_bad_frame = BadFramePolicy::kHold;
+  // Catch SIGINT / SIGTERM while tracking: stop after the current frame and commit the outputs
+  // for the frames tracked so far (the previous handlers are restored afterwards).
+  bool handle_signals = true;
   TrackerOptions tracker;
 };
 
@@ -31,14 +42,20 @@ struct TrackSummary {
   double fps = 0.0;  // tracked frames per second of tracking time (decoding excluded)
   double mean_vertices = 0.0;
   double mean_edges = 0.0;
+  int bad_frames = 0;        // frames reported as bad and held (BadFramePolicy::kHold)
+  int stop_signal = 0;       // SIGINT / SIGTERM that ended the run early, else 0
+  int expected_frames = -1;  // frames the input announced, -1 if unknown
 };
 
 // Resolves the initial polygon from init_file or init_points (exactly one must be set).
 // Throws std::runtime_error / std::invalid_argument with a message naming the source.
 Polygon load_initial_polygon(const TrackRunOptions& options);
 
-// Runs the whole job. Progress and the summary go to `log` unless quiet. Throws on bad input;
-// no output file is left behind by a failed run.
+// Runs the whole job. Progress and the summary go to `log` unless quiet; bad frames and an
+// interruption are reported on `log` as one "scbt: warning: ..." line each even when quiet.
+// Throws on bad input; no output file is left behind (and no existing one replaced) by a failed
+// run. Interrupted by a signal, it commits complete outputs for the frames tracked so far and
+// returns with stop_signal set.
 TrackSummary run_track(const TrackRunOptions& options, std::ostream& log);
 
 // Formats the summary as a short human-readable block.

@@ -17,10 +17,12 @@ int main(int argc, char** argv) {
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
-    return app.exit(e);
+    if (e.get_exit_code() == 0) return app.exit(e);  // --help, --version
+    return scbt::cli::report_error(e.what(), scbt::cli::kExitUsage);
+  } catch (const std::invalid_argument& e) {
+    return scbt::cli::report_error(e.what(), scbt::cli::kExitUsage);
   } catch (const std::exception& e) {
-    std::cerr << "scbt: error: " << e.what() << std::endl;
-    return 1;
+    return scbt::cli::report_error(e.what(), scbt::cli::kExitFailure);
   }
   return exit_code;
 }

@@ -3,6 +3,9 @@
 #include <algorithm>
 #include <cctype>
 #include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <opencv2/core.hpp>
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/videoio.hpp>
 #include <stdexcept>
@@ -23,6 +26,51 @@ bool is_image_extension(std::string ext) {
          ext == ".tiff" || ext == ".ppm" || ext == ".pgm" || ext == ".webp";
 }
 
+// Frames reach the tracker as 8-bit images of 1, 3 or 4 channels: 16-bit images are scaled down
+// (65535 -> 255), 2-channel ones keep their first channel; other depths are refused by name.
+void normalize_frame(cv::Mat* frame, const std::string& name) {
+  if (frame->depth() == CV_16U) {
+    frame->convertTo(*frame, CV_8U, 1.0 / 257.0);
+  } else if (frame->depth() != CV_8U) {
+    throw std::runtime_error(name + ": unsupported pixel depth (only 8- and 16-bit images)");
+  }
+  if (frame->channels() == 2) cv::extractChannel(*frame, *frame, 0);
+  if (frame->channels() != 1 && frame->channels() != 3 && frame->channels() != 4) {
+    throw std::runtime_error(name + ": unsupported channel count " +
+                             std::to_string(frame->channels()));
+  }
+}
+
+std::vector<unsigned char> read_file_bytes(const std::string& path) {
+  std::ifstream file(path, std::ios::binary);
+  if (!file) throw std::runtime_error(path + ": cannot open for reading");
+  std::vector<unsigned char> bytes((std::istreambuf_iterator<char>(file)),
+                                   std::istreambuf_iterator<char>());
+  if (file.bad()) throw std::runtime_error(path + ": read error");
+  if (bytes.empty()) throw std::runtime_error(path + ": empty file");
+  return bytes;
+}
+
+// Decoders fill a cut-off JPEG or PNG with grey and only warn, so the end markers are checked:
+// a JPEG must end with EOI (FF D9, maybe followed by padding), a PNG with its IEND chunk.
+bool is_truncated_image(const std::vector<unsigned char>& bytes) {
+  const size_t n = bytes.size();
+  if (n >= 3 && bytes[0] == 0xFF && bytes[1] == 0xD8 && bytes[2] == 0xFF) {
+    const size_t from = n > 1024 ? n - 1024 : 2;
+    for (size_t i = n - 1; i > from; --i) {
+      if (bytes[i - 1] == 0xFF && bytes[i] == 0xD9) return false;
+    }
+    return true;
+  }
+  static const unsigned char kPng[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1A, '\n'};
+  if (n >= 8 && std::equal(kPng, kPng + 8, bytes.begin())) {
+    static const char kIend[] = "IEND";
+    const size_t from = n > 64 ? n - 64 : 8;
+    return std::search(bytes.begin() + from, bytes.end(), kIend, kIend + 4) == bytes.end();
+  }
+  return false;
+}
+
 class ImageFolderSource : public FrameSource {
  public:
   explicit ImageFolderSource(std::vector<std::string> files) : files_(std::move(files)) {}
@@ -30,8 +78,12 @@ class ImageFolderSource : public FrameSource {
   bool read(cv::Mat* frame) override {
     if (next_ >= files_.size()) return false;
     current_ = next_++;
-    *frame = cv::imread(files_[current_], cv::IMREAD_UNCHANGED);
-    if (frame->empty()) throw std::runtime_error(files_[current_] + ": cannot decode image");
+    const std::string& name = files_[current_];
+    const std::vector<unsigned char> bytes = read_file_bytes(name);
+    if (is_truncated_image(bytes)) throw std::runtime_error(name + ": truncated image file");
+    *frame = cv::imdecode(bytes, cv::IMREAD_UNCHANGED);
+    if (frame->empty()) throw std::runtime_error(name + ": cannot decode image");
+    normalize_frame(frame, files_[current_]);
     return true;
   }
   int frame_count() const override { return static_cast<int>(files_.size()); }
@@ -48,10 +100,39 @@ class VideoSource : public FrameSource {
   VideoSource(cv::VideoCapture capture, std::string name, bool is_camera)
       : capture_(std::move(capture)), name_(std::move(name)), is_camera_(is_camera) {}
 
+  // A frame that fails to decode before the announced end is reported (std::runtime_error) and
+  // skipped: the next kMaxSkip frames are tried, and each failed one before a good frame is
+  // reported in turn. When none of them decodes, the video is taken to end there.
   bool read(cv::Mat* frame) override {
-    if (!capture_.read(*frame) || frame->empty()) return false;
-    ++index_;
-    return true;
+    if (pending_bad_ > 0) {
+      --pending_bad_;
+      ++index_;
+      throw std::runtime_error(current_name() + ": cannot decode video frame");
+    }
+    if (!pending_.empty()) {
+      *frame = pending_;
+      pending_.release();
+      ++index_;
+      normalize_frame(frame, current_name());
+      return true;
+    }
+    if (capture_.read(*frame) && !frame->empty()) {
+      ++index_;
+      normalize_frame(frame, current_name());
+      return true;
+    }
+    const int announced = frame_count();
+    if (is_camera_ || announced < 0 || index_ + 1 >= announced) return false;
+    constexpr int kMaxSkip = 8;
+    for (int failed = 1; failed <= kMaxSkip && index_ + failed < announced; ++failed) {
+      if (capture_.read(pending_) && !pending_.empty()) {
+        pending_bad_ = failed - 1;
+        ++index_;
+        throw std::runtime_error(current_name() + ": cannot decode video frame");
+      }
+    }
+    pending_.release();
+    return false;
   }
   int frame_count() const override {
     if (is_camera_) return -1;
@@ -69,6 +150,8 @@ class VideoSource : public FrameSource {
   std::string name_;
   bool is_camera_;
   int index_ = 0;
+  int pending_bad_ = 0;  // failed frames still to report before `pending_`
+  cv::Mat pending_;      // a good frame read past failed ones
 };
 
 }  // namespace

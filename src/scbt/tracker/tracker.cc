@@ -1,5 +1,6 @@
 #include "scbt/tracker/tracker.h"
 
+#include <algorithm>
 #include <chrono>
 #include <opencv2/imgproc.hpp>
 #include <stdexcept>
@@ -85,8 +86,15 @@ TrackResult Tracker::track(const cv::Mat& frame) {
   result.line_ms = elapsed_ms(line_start);
 
   const Clock::time_point grouping_start = Clock::now();
-  const std::vector<Segment> kept =
+  std::vector<Segment> kept =
       filter_segments_near_boundary(detected, boundary_, options_.filter_distance);
+  if (static_cast<int>(kept.size()) > options_.max_segments) {
+    result.num_dropped = static_cast<int>(kept.size()) - options_.max_segments;
+    std::nth_element(
+        kept.begin(), kept.begin() + options_.max_segments, kept.end(),
+        [](const Segment& a, const Segment& b) { return a.length() > b.length(); });
+    kept.resize(options_.max_segments);
+  }
   SegmentGraph graph = build_segment_graph(kept);
   const std::vector<CycleCandidate> candidates = search_cycle_candidates(graph, options_.bdsp);
   const std::optional<BoundaryChoice> choice = choose_boundary_stable(

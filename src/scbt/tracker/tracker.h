@@ -16,7 +16,8 @@ struct TrackResult {
   double cost = 0.0;             // grouping cost Γ of the chosen cycle (Eq. 1)
   double area_similarity = 0.0;  // Eq. 2 between the chosen cycle and the previous boundary
   int num_detected = 0;          // segments from the line detector
-  int num_kept = 0;              // segments passing the distance filter
+  int num_kept = 0;              // segments passing the distance filter (and the cap)
+  int num_dropped = 0;           // segments passing the filter dropped by max_segments
   int num_vertices = 0;          // graph size
   int num_edges = 0;
   int num_candidates = 0;    // BDSP cycle candidates evaluated

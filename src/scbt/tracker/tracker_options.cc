@@ -20,6 +20,10 @@ void TrackerOptions::check() const {
     throw std::invalid_argument("cost_tolerance must be in [0, 10], got " +
                                 std::to_string(cost_tolerance));
   }
+  if (max_segments < 3 || max_segments > 100000) {
+    throw std::invalid_argument("max_segments must be in 3..100000, got " +
+                                std::to_string(max_segments));
+  }
   if (bdsp.seed_stride < 1 || bdsp.seed_stride > 1000) {
     throw std::invalid_argument("seed_stride must be in 1..1000, got " +
                                 std::to_string(bdsp.seed_stride));

@@ -18,6 +18,9 @@ struct TrackerOptions {
   // outward ratchet (inner -> outer rim -> table edges) that Γ alone allows.
   double cost_tolerance = 0.1;
   BdspOptions bdsp;
+  // Bound on the work per frame: when more segments than this pass the distance filter, only the
+  // longest are kept (TrackResult::num_dropped counts the rest). BDSP grows about quadratically.
+  int max_segments = 1500;
 
   // Throws std::invalid_argument naming the first bad value.
   void check() const;
