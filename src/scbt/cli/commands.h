@@ -21,6 +21,7 @@ int report_error(const std::string& message, int exit_code);
 void add_track_command(CLI::App& app, int* exit_code);
 void add_demo_command(CLI::App& app, int* exit_code);
 void add_eval_command(CLI::App& app, int* exit_code);
+void add_bench_command(CLI::App& app, int* exit_code);
 
 // The tracker options shared by every command that tracks (--detector, --filter-distance, ...).
 void add_tracker_options(CLI::App* command, TrackerOptions* options, std::string* detector_name);

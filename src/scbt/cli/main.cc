@@ -14,6 +14,7 @@ int main(int argc, char** argv) {
   scbt::cli::add_track_command(app, &exit_code);
   scbt::cli::add_demo_command(app, &exit_code);
   scbt::cli::add_eval_command(app, &exit_code);
+  scbt::cli::add_bench_command(app, &exit_code);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

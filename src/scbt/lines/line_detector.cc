@@ -32,17 +32,54 @@ class EdLinesDetector : public LineDetector {
     params.PFmode = false;
     params.SumFlag = true;
     params.NFAValidation = true;
-    detector_->setParams(params);
+    params_ = params;
+    detector_->setParams(params_);
   }
 
   std::vector<Segment> detect(const cv::Mat& gray) override {
-    detector_->detectEdges(gray);
-    detector_->detectLines(lines_);
+    set_min_line_length(params_.MinLineLength <= 0 ? -1 : params_.MinLineLength);
+    run(gray);
     return to_segments(lines_);
   }
 
+  std::vector<Segment> detect_in(const cv::Mat& crop, cv::Point offset,
+                                 cv::Size full_size) override {
+    set_min_line_length(params_.MinLineLength <= 0 ? edlines_auto_min_line_length(full_size)
+                                                   : params_.MinLineLength);
+    run(crop);
+    std::vector<Segment> segments;
+    segments.reserve(lines_.size());
+    const Point shift(offset.x, offset.y);
+    for (const cv::Vec4f& l : lines_) {
+      segments.push_back({Point(l[0], l[1]) + shift, Point(l[2], l[3]) + shift});
+    }
+    return segments;
+  }
+
  private:
+  void set_min_line_length(int length) {
+    if (length == applied_min_length_) return;
+    cv::ximgproc::EdgeDrawing::Params params = params_;
+    params.MinLineLength = length;
+    detector_->setParams(params);
+    applied_min_length_ = length;
+  }
+
+  void run(const cv::Mat& gray) {
+    // EdgeDrawing walks the pixels as one contiguous block.
+    const cv::Mat* input = &gray;
+    if (!gray.isContinuous()) {
+      gray.copyTo(contiguous_);
+      input = &contiguous_;
+    }
+    detector_->detectEdges(*input);
+    detector_->detectLines(lines_);
+  }
+
   cv::Ptr<cv::ximgproc::EdgeDrawing> detector_;
+  cv::ximgproc::EdgeDrawing::Params params_;
+  int applied_min_length_ = 0;  // never a value set_min_line_length is called with
+  cv::Mat contiguous_;
   std::vector<cv::Vec4f> lines_;
 };
 
@@ -88,6 +125,45 @@ class FastLineDetectorAdapter : public LineDetector {
 
 }  // namespace
 
+std::vector<Segment> LineDetector::detect_in(const cv::Mat& crop, cv::Point offset,
+                                             cv::Size /*full_size*/) {
+  std::vector<Segment> segments = detect(crop.isContinuous() ? crop : crop.clone());
+  const Point shift(offset.x, offset.y);
+  for (Segment& s : segments) {
+    s.a += shift;
+    s.b += shift;
+  }
+  return segments;
+}
+
+cv::Rect detection_roi(const Polygon& boundary, double margin, cv::Size frame_size) {
+  const cv::Rect frame(cv::Point(0, 0), frame_size);
+  if (boundary.empty()) return frame;
+  double x0 = boundary[0].x, x1 = x0, y0 = boundary[0].y, y1 = y0;
+  for (const Point& p : boundary) {
+    x0 = std::min(x0, p.x);
+    x1 = std::max(x1, p.x);
+    y0 = std::min(y0, p.y);
+    y1 = std::max(y1, p.y);
+  }
+  // Clamp in double first: a far-away polygon must not overflow int.
+  auto clamp_x = [&](double x) {
+    return static_cast<int>(std::clamp(x, 0.0, 1.0 * frame_size.width));
+  };
+  auto clamp_y = [&](double y) {
+    return static_cast<int>(std::clamp(y, 0.0, 1.0 * frame_size.height));
+  };
+  const int left = clamp_x(std::floor(x0 - margin)), right = clamp_x(std::ceil(x1 + margin) + 1);
+  const int top = clamp_y(std::floor(y0 - margin)), bottom = clamp_y(std::ceil(y1 + margin) + 1);
+  return cv::Rect(left, top, std::max(0, right - left), std::max(0, bottom - top));
+}
+
+int edlines_auto_min_line_length(cv::Size size) {
+  const double log_nt = 2.0 * (std::log10(static_cast<double>(size.width)) +
+                               std::log10(static_cast<double>(size.height)));
+  return static_cast<int>(std::round(-log_nt / std::log10(0.125) * 0.5));
+}
+
 LineDetectorKind parse_line_detector_kind(const std::string& name) {
   if (name == "edlines") return LineDetectorKind::kEdLines;
   if (name == "lsd") return LineDetectorKind::kLsd;
@@ -125,6 +201,10 @@ void LineDetectorOptions::check() const {
   if (!(line_fit_error > 0.0 && line_fit_error <= 100.0)) {
     throw std::invalid_argument("line_fit_error must be in (0, 100], got " +
                                 std::to_string(line_fit_error));
+  }
+  if (!(roi_padding >= 0.0 && roi_padding <= 1000.0)) {
+    throw std::invalid_argument("roi_padding must be in [0, 1000], got " +
+                                std::to_string(roi_padding));
   }
   if (!(min_line_length <= 10000.0)) {
     throw std::invalid_argument("min_line_length must be <= 10000, got " +

@@ -31,6 +31,11 @@ struct LineDetectorOptions {
   double min_line_length = -1.0;
   // Maximum mean squared distance of an edge pixel to its fitted line (pixels^2).
   double line_fit_error = 1.0;
+  // Tracking detects only inside the previous boundary's bounding box grown by the filter
+  // distance plus `roi_padding` pixels (room for the detector's smoothing and gradient masks),
+  // instead of on the whole frame. false: the whole frame (the straightforward pipeline).
+  bool crop_to_boundary = true;
+  double roi_padding = 8.0;
 
   // Throws std::invalid_argument naming the first bad value.
   void check() const;
@@ -41,7 +46,21 @@ class LineDetector {
   virtual ~LineDetector() = default;
   // `gray` is an 8-bit single-channel image. Segments are in its pixel coordinates.
   virtual std::vector<Segment> detect(const cv::Mat& gray) = 0;
+  // Detects on `crop`, a window at `offset` of an image of `full_size`, with the settings the
+  // detector would use on the whole image (EDLines' automatic minimum length depends on the image
+  // size), and returns segments in the whole image's coordinates. `crop` may be a non-contiguous
+  // view. The default shifts the result of detect().
+  virtual std::vector<Segment> detect_in(const cv::Mat& crop, cv::Point offset, cv::Size full_size);
 };
+
+// The part of a `frame_size` image within `margin` pixels of the polygon's bounding box (whole
+// pixels, clipped to the image; empty when they do not overlap).
+cv::Rect detection_roi(const Polygon& boundary, double margin, cv::Size frame_size);
+
+// The minimum segment length EDLines picks for an image of this size when min_line_length <= 0
+// (the number of pixels whose chance alignment has NFA below 1: -logNT / log10(1/8) / 2, with
+// logNT = 2 (log10 w + log10 h), rounded).
+int edlines_auto_min_line_length(cv::Size size);
 
 std::unique_ptr<LineDetector> make_line_detector(const LineDetectorOptions& options);
 

@@ -149,6 +149,8 @@ TEST(LineDetectorOptions, CheckRejectsBadValues) {
       {[](LineDetectorOptions* o) { o->line_fit_error = 101.0; }, "line_fit_error"},
       {[=](LineDetectorOptions* o) { o->min_line_length = nan; }, "min_line_length"},
       {[](LineDetectorOptions* o) { o->min_line_length = 1e5; }, "min_line_length"},
+      {[](LineDetectorOptions* o) { o->roi_padding = -1.0; }, "roi_padding"},
+      {[=](LineDetectorOptions* o) { o->roi_padding = nan; }, "roi_padding"},
   };
   for (const Case& c : cases) {
     LineDetectorOptions options;
@@ -160,6 +162,81 @@ TEST(LineDetectorOptions, CheckRejectsBadValues) {
       EXPECT_NE(std::string(e.what()).find(c.name), std::string::npos) << e.what();
     }
     EXPECT_THROW(make_line_detector(options), std::invalid_argument) << c.name;
+  }
+}
+
+// The window grown around a random polygon lies in the frame, contains every polygon point within
+// the frame grown by the margin, and is no larger than the grown bounding box needs.
+TEST(DetectionRoi, CoversGrownBoundingBoxInsideFrame) {
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<double> coord(-50.0, 700.0), margin(0.0, 40.0);
+  const cv::Size frame(640, 480);
+  for (int trial = 0; trial < 200; ++trial) {
+    Polygon polygon;
+    for (int k = 0; k < 5; ++k) polygon.push_back({coord(rng), coord(rng)});
+    const double m = margin(rng);
+    const cv::Rect roi = detection_roi(polygon, m, frame);
+    EXPECT_EQ(roi & cv::Rect(cv::Point(0, 0), frame), roi);
+    for (const Point& p : polygon) {
+      for (const Point& d : {Point(-m, -m), Point(m, m)}) {
+        const Point q = p + d;
+        const double x = std::clamp(q.x, 0.0, frame.width - 1.0);
+        const double y = std::clamp(q.y, 0.0, frame.height - 1.0);
+        EXPECT_TRUE(roi.contains(cv::Point(static_cast<int>(x), static_cast<int>(y))))
+            << trial << ": " << x << "," << y << " outside " << roi;
+      }
+    }
+    double x0 = 1e9, x1 = -1e9;
+    for (const Point& p : polygon) x0 = std::min(x0, p.x), x1 = std::max(x1, p.x);
+    EXPECT_LE(roi.width, std::ceil(x1 - x0 + 2 * m) + 3) << trial;
+  }
+}
+
+TEST(EdLinesAutoMinLength, GrowsWithImageSize) {
+  EXPECT_LT(edlines_auto_min_line_length({64, 48}), edlines_auto_min_line_length({640, 480}));
+  EXPECT_GE(edlines_auto_min_line_length({640, 480}), 5);
+  EXPECT_LE(edlines_auto_min_line_length({640, 480}), 8);
+}
+
+// Detecting in a window around a rendered rectangle finds, in frame coordinates, segments close
+// to those found on the whole frame; with the window = the whole frame, exactly the same ones.
+TEST(LineDetectorDetectIn, WindowMatchesWholeFrame) {
+  for (unsigned seed = 0; seed < 12; ++seed) {
+    std::mt19937 rng(seed);
+    std::uniform_int_distribution<int> x0(60, 300), y0(60, 200), w(60, 200), h(50, 150);
+    const cv::Rect rect(x0(rng), y0(rng), w(rng), h(rng));
+    cv::Mat image(480, 640, CV_8UC1, cv::Scalar(60));
+    cv::rectangle(image, rect, cv::Scalar(200), cv::FILLED);
+    cv::line(image, {0, 470}, {630, 10}, cv::Scalar(140), 3);  // a distractor crossing the frame
+    for (LineDetectorKind kind : {LineDetectorKind::kEdLines, LineDetectorKind::kLsd,
+                                  LineDetectorKind::kFastLineDetector}) {
+      LineDetectorOptions options;
+      options.kind = kind;
+      std::unique_ptr<LineDetector> detector = make_line_detector(options);
+      const std::vector<Segment> whole = detector->detect(image);
+      const std::vector<Segment> same = detector->detect_in(image, cv::Point(0, 0), image.size());
+      ASSERT_EQ(whole.size(), same.size()) << to_string(kind);
+      for (size_t i = 0; i < whole.size(); ++i) {
+        EXPECT_EQ(whole[i].a, same[i].a);
+        EXPECT_EQ(whole[i].b, same[i].b);
+      }
+      const Polygon corners = {Point(rect.x, rect.y), Point(rect.br().x, rect.y),
+                               Point(rect.br().x, rect.br().y), Point(rect.x, rect.br().y)};
+      const cv::Rect roi = detection_roi(corners, 20.0, image.size());
+      const std::vector<Segment> cropped = detector->detect_in(image(roi), roi.tl(), image.size());
+      for (int side = 0; side < 4; ++side) {
+        const Segment edge{corners[side], corners[(side + 1) % 4]};
+        EXPECT_GT(covered_length(edge, cropped, 2.0), 0.95 * covered_length(edge, whole, 2.0) - 3.0)
+            << to_string(kind) << " seed " << seed << " side " << side;
+      }
+      for (const Segment& s : cropped) {
+        for (const Point& p : {s.a, s.b}) {
+          EXPECT_TRUE(p.x >= roi.x - 0.5 && p.x <= roi.br().x + 0.5 && p.y >= roi.y - 0.5 &&
+                      p.y <= roi.br().y + 0.5)
+              << p << " outside " << roi;
+        }
+      }
+    }
   }
 }
 

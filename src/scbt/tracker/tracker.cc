@@ -76,13 +76,22 @@ TrackResult Tracker::track(const cv::Mat& frame) {
   TrackResult result;
 
   const Clock::time_point line_start = Clock::now();
-  to_gray(frame, &gray_);
+  if (frame.empty()) to_gray(frame, &gray_);  // throws
   if (frame.size() != frame_size_) {
     throw std::invalid_argument("frame size changed from " + std::to_string(frame_size_.width) +
                                 "x" + std::to_string(frame_size_.height) + " to " +
                                 std::to_string(frame.cols) + "x" + std::to_string(frame.rows));
   }
-  std::vector<Segment> detected = detector_->detect(gray_);
+  // Only segments near the previous boundary can survive the distance filter, so only the
+  // window around it is converted and searched (crop_to_boundary; whole frame otherwise).
+  cv::Rect roi(cv::Point(0, 0), frame_size_);
+  if (options_.detector.crop_to_boundary) {
+    roi = detection_roi(boundary_, options_.filter_distance + options_.detector.roi_padding,
+                        frame_size_);
+    if (roi.empty()) roi = cv::Rect(cv::Point(0, 0), frame_size_);
+  }
+  to_gray(frame(roi), &gray_);
+  std::vector<Segment> detected = detector_->detect_in(gray_, roi.tl(), frame_size_);
   result.line_ms = elapsed_ms(line_start);
 
   const Clock::time_point grouping_start = Clock::now();

@@ -1,0 +1,228 @@
+#include "scbt/app/bench_run.h"
+
+#include <sys/resource.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <memory>
+#include <sstream>
+#include <stdexcept>
+
+#include "scbt/app/progress.h"
+#include "scbt/eval/alignment_error.h"
+#include "scbt/eval/dataset.h"
+#include "scbt/geometry/polygon_io.h"
+#include "scbt/io/atomic_file.h"
+#include "scbt/io/frame_source.h"
+#include "scbt/tracker/tracker.h"
+
+namespace scbt {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+long peak_rss_kb() {
+  rusage usage{};
+  getrusage(RUSAGE_SELF, &usage);
+  return usage.ru_maxrss;  // kilobytes on Linux
+}
+
+std::vector<Polygon> read_truth(const std::string& path) {
+  std::vector<Polygon> truth;
+  for (const std::string& line : read_text_lines(path)) {
+    if (line.find_first_not_of(" \t\r") == std::string::npos) continue;
+    truth.push_back(parse_polygon_line(line));
+  }
+  if (truth.empty()) throw std::runtime_error(path + ": no ground truth");
+  return truth;
+}
+
+// Per-frame samples of one configuration.
+struct Samples {
+  std::string config;
+  std::unique_ptr<Tracker> tracker;
+  std::vector<double> line, grouping, total;
+  std::vector<double> errors;
+  int held = 0;
+  double detected = 0.0;
+};
+
+BenchConfigResult summarise(const Samples& s) {
+  BenchConfigResult r;
+  r.config = s.config;
+  r.line = time_stats(s.line);
+  r.grouping = time_stats(s.grouping);
+  r.total = time_stats(s.total);
+  r.fps = r.total.mean > 0.0 ? 1000.0 / r.total.mean : 0.0;
+  r.held = s.held;
+  r.success_10px = success_rate(s.errors, 10.0);
+  r.mean_detected = s.total.empty() ? 0.0 : s.detected / static_cast<double>(s.total.size());
+  return r;
+}
+
+std::string fixed(double value, int decimals) {
+  char text[64];
+  std::snprintf(text, sizeof(text), "%.*f", decimals, value);
+  return text;
+}
+
+}  // namespace
+
+void BenchRunOptions::check() const {
+  if (dataset.empty()) throw std::invalid_argument("dataset folder is required");
+  if (max_frames < 0) {
+    throw std::invalid_argument("max_frames must be >= 0, got " + std::to_string(max_frames));
+  }
+  tracker.check();
+}
+
+TimeStats time_stats(std::vector<double> samples) {
+  TimeStats stats;
+  if (samples.empty()) return stats;
+  std::sort(samples.begin(), samples.end());
+  const size_t n = samples.size();
+  auto rank = [&](double q) {
+    const size_t k = static_cast<size_t>(std::ceil(q * static_cast<double>(n)));
+    return samples[std::clamp<size_t>(k, 1, n) - 1];
+  };
+  double sum = 0.0;
+  for (double x : samples) sum += x;
+  stats.mean = sum / static_cast<double>(n);
+  stats.median = rank(0.5);
+  stats.p90 = rank(0.9);
+  stats.p99 = rank(0.99);
+  stats.max = samples.back();
+  return stats;
+}
+
+BenchReport run_bench(const BenchRunOptions& options, std::ostream& log) {
+  options.check();
+  const std::vector<DatasetSequence> sequences =
+      select_dataset_sequences(options.dataset, options.sequences);
+  std::unique_ptr<AtomicFile> csv;
+  if (!options.csv.empty()) {
+    csv = std::make_unique<AtomicFile>(options.csv);
+    csv->stream() << "sequence,config,frames,line_median_ms,line_p90_ms,line_p99_ms,"
+                     "grouping_median_ms,grouping_p90_ms,grouping_p99_ms,total_mean_ms,"
+                     "total_median_ms,total_p90_ms,total_p99_ms,fps,held,success_10px,"
+                     "mean_detected,peak_rss_kb\n";
+  }
+
+  BenchReport report;
+  for (const DatasetSequence& sequence : sequences) {
+    const std::vector<Polygon> truth = read_truth(sequence.ground_truth);
+    std::unique_ptr<FrameSource> source = open_frame_source(sequence.frames);
+    int total_frames = source->frame_count();
+    if (options.max_frames > 0 && (total_frames < 0 || total_frames > options.max_frames)) {
+      total_frames = options.max_frames;
+    }
+
+    std::vector<Samples> runs;
+    runs.push_back({"optimised", std::make_unique<Tracker>(options.tracker), {}, {}, {}, {}, 0, 0});
+    if (options.compare) {
+      TrackerOptions plain = options.tracker;
+      plain.detector.crop_to_boundary = false;
+      runs.push_back({"straightforward", std::make_unique<Tracker>(plain), {}, {}, {}, {}, 0, 0});
+    }
+
+    cv::Mat frame;
+    if (!source->read(&frame)) throw std::runtime_error(sequence.frames + ": no frames");
+    const cv::Size canvas = frame.size();
+    for (Samples& run : runs) {
+      run.tracker->init(frame, truth.front());
+      run.errors.push_back(alignment_error(truth.front(), truth.front(), canvas));
+    }
+    ProgressBar progress(log, sequence.name, total_frames, !options.quiet);
+    int frames = 1;
+    while ((options.max_frames == 0 || frames < options.max_frames) && source->read(&frame)) {
+      for (Samples& run : runs) {
+        const Clock::time_point start = Clock::now();
+        const TrackResult result = run.tracker->track(frame);
+        run.total.push_back(
+            std::chrono::duration<double, std::milli>(Clock::now() - start).count());
+        run.line.push_back(result.line_ms);
+        run.grouping.push_back(result.grouping_ms);
+        run.held += result.held ? 1 : 0;
+        run.detected += result.num_detected;
+        run.errors.push_back(static_cast<size_t>(frames) < truth.size()
+                                 ? alignment_error(result.boundary, truth[frames], canvas)
+                                 : std::numeric_limits<double>::infinity());
+      }
+      ++frames;
+      if (frames % 25 == 0) progress.update(frames);
+    }
+    progress.finish(frames);
+
+    BenchSequenceResult result;
+    result.name = sequence.name;
+    result.frames = frames;
+    for (const Samples& run : runs) result.configs.push_back(summarise(run));
+    result.peak_rss_kb = peak_rss_kb();
+    if (result.configs.size() > 1 && result.configs[0].total.mean > 0.0) {
+      result.speedup = result.configs[1].total.mean / result.configs[0].total.mean;
+    }
+    if (csv) {
+      for (const BenchConfigResult& c : result.configs) {
+        csv->stream() << result.name << ',' << c.config << ',' << result.frames << ','
+                      << c.line.median << ',' << c.line.p90 << ',' << c.line.p99 << ','
+                      << c.grouping.median << ',' << c.grouping.p90 << ',' << c.grouping.p99 << ','
+                      << c.total.mean << ',' << c.total.median << ',' << c.total.p90 << ','
+                      << c.total.p99 << ',' << c.fps << ',' << c.held << ',' << c.success_10px
+                      << ',' << c.mean_detected << ',' << result.peak_rss_kb << '\n';
+      }
+    }
+    report.sequences.push_back(std::move(result));
+  }
+
+  for (const BenchSequenceResult& s : report.sequences) {
+    report.mean_total_ms += s.configs[0].total.mean;
+    report.slowest_total_ms = std::max(report.slowest_total_ms, s.configs[0].total.mean);
+    if (s.configs.size() > 1) report.baseline_mean_total_ms += s.configs[1].total.mean;
+  }
+  if (!report.sequences.empty()) {
+    report.mean_total_ms /= static_cast<double>(report.sequences.size());
+    report.baseline_mean_total_ms /= static_cast<double>(report.sequences.size());
+  }
+  if (csv) csv->commit();
+  return report;
+}
+
+std::string format_bench_report(const BenchReport& report) {
+  std::ostringstream out;
+  out << "| sequence | config | frames | line ms median/p90/p99 | grouping ms median/p90/p99 | "
+         "total ms mean/median/p90/p99 | fps | held | success@10px | peak RSS MB | speed-up |\n"
+         "|---|---|---|---|---|---|---|---|---|---|---|\n";
+  for (const BenchSequenceResult& s : report.sequences) {
+    for (size_t k = 0; k < s.configs.size(); ++k) {
+      const BenchConfigResult& c = s.configs[k];
+      out << "| " << s.name << " | " << c.config << " | " << s.frames << " | "
+          << fixed(c.line.median, 3) << " / " << fixed(c.line.p90, 3) << " / "
+          << fixed(c.line.p99, 3) << " | " << fixed(c.grouping.median, 3) << " / "
+          << fixed(c.grouping.p90, 3) << " / " << fixed(c.grouping.p99, 3) << " | "
+          << fixed(c.total.mean, 3) << " / " << fixed(c.total.median, 3) << " / "
+          << fixed(c.total.p90, 3) << " / " << fixed(c.total.p99, 3) << " | " << fixed(c.fps, 0)
+          << " | " << c.held << " | " << fixed(c.success_10px, 3) << " | "
+          << fixed(s.peak_rss_kb / 1024.0, 1) << " | "
+          << (k == 0 && s.speedup > 0.0 ? fixed(s.speedup, 2) + "x" : std::string("")) << " |\n";
+    }
+  }
+  out << "\nTable I style (optimised configuration, one core):\n\n"
+         "| sequence | line detection ms | grouping ms | fps |\n|---|---|---|---|\n";
+  for (const BenchSequenceResult& s : report.sequences) {
+    const BenchConfigResult& c = s.configs[0];
+    out << "| " << s.name << " | " << fixed(c.line.mean, 3) << " | " << fixed(c.grouping.mean, 3)
+        << " | " << fixed(c.fps, 0) << " |\n";
+  }
+  out << "\nmean tracking time per frame over sequences: " << fixed(report.mean_total_ms, 3)
+      << " ms; slowest sequence: " << fixed(report.slowest_total_ms, 3) << " ms";
+  if (report.baseline_mean_total_ms > 0.0) {
+    out << "; straightforward: " << fixed(report.baseline_mean_total_ms, 3) << " ms ("
+        << fixed(report.baseline_mean_total_ms / std::max(1e-9, report.mean_total_ms), 2) << "x)";
+  }
+  out << '\n';
+  return out.str();
+}
+
+}  // namespace scbt

@@ -1,0 +1,38 @@
+#include <iostream>
+
+#include "scbt/app/bench_run.h"
+#include "scbt/cli/commands.h"
+
+namespace scbt::cli {
+
+void add_bench_command(CLI::App& app, int* exit_code) {
+  auto options = std::make_shared<BenchRunOptions>();
+  auto detector = std::make_shared<std::string>("edlines");
+  auto full_frame = std::make_shared<bool>(false);
+  auto no_compare = std::make_shared<bool>(false);
+  CLI::App* command = app.add_subcommand(
+      "bench",
+      "Time every stage per sequence (median/p90/p99, fps, peak RSS) and the speed-up against "
+      "whole-frame detection measured in the same run; run it pinned: taskset -c 0 scbt bench");
+  command->add_option("--dataset", options->dataset, "Dataset folder")->required();
+  command->add_option("--sequences", options->sequences, "Only these sequences (default: all)");
+  command->add_option("--max-frames", options->max_frames,
+                      "Frames per sequence, the initial one included (0: all)");
+  command->add_option("--csv", options->csv, "Write the per-sequence figures as CSV");
+  command->add_flag("--full-frame", *full_frame,
+                    "Detect lines on the whole frame in the configuration under test too");
+  command->add_flag("--no-compare", *no_compare,
+                    "Skip the straightforward (whole-frame) configuration");
+  command->add_flag("-q,--quiet", options->quiet, "No progress bars");
+  add_tracker_options(command, &options->tracker, detector.get());
+  command->callback([options, detector, full_frame, no_compare, exit_code] {
+    options->tracker.detector.kind = parse_line_detector_kind(*detector);
+    options->tracker.detector.crop_to_boundary = !*full_frame;
+    options->compare = !*no_compare;
+    const BenchReport report = run_bench(*options, std::cerr);
+    std::cout << format_bench_report(report) << std::flush;
+    *exit_code = 0;
+  });
+}
+
+}  // namespace scbt::cli
