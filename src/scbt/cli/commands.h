@@ -4,6 +4,10 @@
 
 #include <CLI/CLI.hpp>
 
+#include <memory>
+#include <string>
+
+#include "scbt/app/track_run.h"
 #include "scbt/tracker/tracker_options.h"
 
 namespace scbt::cli {
@@ -19,6 +23,18 @@ constexpr int kExitInterrupted = 128;  // + signal number: stopped by SIGINT (13
 int report_error(const std::string& message, int exit_code);
 
 void add_track_command(CLI::App& app, int* exit_code);
+
+// The live/interactive window mode of `scbt track` (live_command.cc).
+struct LiveOptions {
+  int camera = -1;  // --camera N
+  bool interactive = false;
+  std::string save_input;
+  double playback_fps = 0.0;
+};
+std::shared_ptr<LiveOptions> add_live_options(CLI::App* command);
+// Runs the interactive session when --camera or --interactive was given (returns true), else
+// returns false so that the batch run goes on. Throws std::invalid_argument on bad combinations.
+bool run_live_if_requested(const LiveOptions& live, const TrackRunOptions& track, int* exit_code);
 void add_demo_command(CLI::App& app, int* exit_code);
 void add_eval_command(CLI::App& app, int* exit_code);
 void add_bench_command(CLI::App& app, int* exit_code);
