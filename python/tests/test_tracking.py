@@ -98,14 +98,19 @@ def test_gil_released_while_tracking():
         done.set()
 
     thread = threading.Thread(target=work)
-    largest_gap, last = 0.0, time.perf_counter()
+    stalled, last = 0.0, time.perf_counter()
     thread.start()
+    begin = last
     while not done.is_set():
         now = time.perf_counter()
-        largest_gap, last = max(largest_gap, now - last), now
+        if now - last > 0.5 * one_call:
+            stalled += now - last
+        last = now
     thread.join()
-    # Holding the GIL would stall this loop for a whole track() call.
-    assert largest_gap < 0.5 * one_call, (largest_gap, one_call)
+    elapsed = time.perf_counter() - begin
+    # Holding the GIL would stall this loop for whole track() calls, i.e. most of the time; with
+    # the GIL released only the OS scheduler (a loaded machine) can stall it.
+    assert stalled < 0.5 * elapsed, (stalled, elapsed, one_call)
 
 
 def test_stage_functions_recover_a_rectangle():
