@@ -29,6 +29,8 @@ class FrameStats:
     @property
     def num_kept(self) -> int: ...
     @property
+    def num_dropped(self) -> int: ...
+    @property
     def num_vertices(self) -> int: ...
     @property
     def num_edges(self) -> int: ...
@@ -88,8 +90,9 @@ class Tracker:
 
     Keyword options (paper defaults): detector='edlines' ('lsd', 'fld'),
     gradient_threshold=36, anchor_threshold=8, scan_interval=1, sigma=1.0,
-    min_line_length=-1.0 (automatic), line_fit_error=1.0, filter_distance=20.0,
-    min_area_similarity=0.9, cost_tolerance=0.1, seed_stride=2, keep_debug=False.
+    min_line_length=-1.0 (automatic), line_fit_error=1.0, crop_to_boundary=True,
+    roi_padding=8.0, filter_distance=20.0, min_area_similarity=0.9, cost_tolerance=0.1,
+    max_segments=1500, seed_stride=2, keep_debug=False.
     Raises ValueError naming a bad value, TypeError for an unknown option.
     """
 
@@ -103,9 +106,12 @@ class Tracker:
         sigma: float = ...,
         min_line_length: float = ...,
         line_fit_error: float = ...,
+        crop_to_boundary: bool = ...,
+        roi_padding: float = ...,
         filter_distance: float = ...,
         min_area_similarity: float = ...,
         cost_tolerance: float = ...,
+        max_segments: int = ...,
         seed_stride: int = ...,
         keep_debug: bool = ...,
     ) -> None: ...
@@ -131,6 +137,8 @@ def detect_line_segments(
     sigma: float = ...,
     min_line_length: float = ...,
     line_fit_error: float = ...,
+    crop_to_boundary: bool = ...,
+    roi_padding: float = ...,
 ) -> FloatArray: ...
 def filter_segments_near_boundary(
     segments: SegmentsLike, boundary: PolygonLike, max_mean_distance: float = 20.0

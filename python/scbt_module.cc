@@ -167,6 +167,10 @@ void apply_detector_kwargs(const py::kwargs& kwargs, LineDetectorOptions* o,
       o->min_line_length = value.cast<double>();
     } else if (key == "line_fit_error") {
       o->line_fit_error = value.cast<double>();
+    } else if (key == "crop_to_boundary") {
+      o->crop_to_boundary = value.cast<bool>();
+    } else if (key == "roi_padding") {
+      o->roi_padding = value.cast<double>();
     } else {
       known = false;
     }
@@ -215,6 +219,8 @@ TrackerOptions tracker_options_from_kwargs(const py::kwargs& kwargs, bool* keep_
         options.min_area_similarity = value.cast<double>();
       } else if (key == "cost_tolerance") {
         options.cost_tolerance = value.cast<double>();
+      } else if (key == "max_segments") {
+        options.max_segments = value.cast<int>();
       } else if (key == "seed_stride") {
         options.bdsp.seed_stride = value.cast<int>();
       } else if (key == "keep_debug") {
@@ -238,6 +244,9 @@ py::dict options_to_dict(const TrackerOptions& o, bool keep_debug) {
   d["sigma"] = o.detector.sigma;
   d["min_line_length"] = o.detector.min_line_length;
   d["line_fit_error"] = o.detector.line_fit_error;
+  d["crop_to_boundary"] = o.detector.crop_to_boundary;
+  d["roi_padding"] = o.detector.roi_padding;
+  d["max_segments"] = o.max_segments;
   d["filter_distance"] = o.filter_distance;
   d["min_area_similarity"] = o.min_area_similarity;
   d["cost_tolerance"] = o.cost_tolerance;
@@ -253,6 +262,7 @@ struct FrameStats {
   double area_similarity = 0.0;
   int num_detected = 0;
   int num_kept = 0;
+  int num_dropped = 0;
   int num_vertices = 0;
   int num_edges = 0;
   int num_candidates = 0;
@@ -268,6 +278,7 @@ FrameStats stats_of(const TrackResult& r) {
   s.area_similarity = r.area_similarity;
   s.num_detected = r.num_detected;
   s.num_kept = r.num_kept;
+  s.num_dropped = r.num_dropped;
   s.num_vertices = r.num_vertices;
   s.num_edges = r.num_edges;
   s.num_candidates = r.num_candidates;
@@ -283,6 +294,7 @@ py::dict stats_to_dict(const FrameStats& s) {
   d["area_similarity"] = s.area_similarity;
   d["num_detected"] = s.num_detected;
   d["num_kept"] = s.num_kept;
+  d["num_dropped"] = s.num_dropped;
   d["num_vertices"] = s.num_vertices;
   d["num_edges"] = s.num_edges;
   d["num_candidates"] = s.num_candidates;
@@ -412,6 +424,8 @@ PYBIND11_MODULE(scbt, m) {
                     "Area similarity (Eq. 2) of the choice with the previous boundary.")
       .def_readonly("num_detected", &FrameStats::num_detected, "Segments the detector found.")
       .def_readonly("num_kept", &FrameStats::num_kept, "Segments passing the distance filter.")
+      .def_readonly("num_dropped", &FrameStats::num_dropped,
+                    "Segments passing the filter but dropped by max_segments.")
       .def_readonly("num_vertices", &FrameStats::num_vertices, "Vertices of the segment graph.")
       .def_readonly("num_edges", &FrameStats::num_edges, "Edges of the segment graph.")
       .def_readonly("num_candidates", &FrameStats::num_candidates,
@@ -499,7 +513,8 @@ PYBIND11_MODULE(scbt, m) {
                         "  detector='edlines' ('lsd', 'fld'), gradient_threshold=36,\n"
                         "  anchor_threshold=8, scan_interval=1, sigma=1.0,\n"
                         "  min_line_length=-1 (automatic), line_fit_error=1.0,\n"
-                        "  filter_distance=20.0, min_area_similarity=0.9, cost_tolerance=0.1,\n"
+                        "  crop_to_boundary=True, roi_padding=8.0, filter_distance=20.0,\n"
+                        "  min_area_similarity=0.9, cost_tolerance=0.1, max_segments=1500,\n"
                         "  seed_stride=2, keep_debug=False.\n"
                         "Raises ValueError naming a bad value, TypeError for an unknown option.")
       .def(py::init<const py::kwargs&>())

@@ -24,6 +24,8 @@ def frame():
         ({"gradient_threshold": -3}, ["gradient_threshold", "-3"]),
         ({"sigma": -1.0}, ["sigma", "-1"]),
         ({"detector": "canny"}, ["canny"]),
+        ({"max_segments": 1}, ["max_segments", "1"]),
+        ({"roi_padding": -2.0}, ["roi_padding", "-2"]),
     ],
 )
 def test_bad_option_values_raise_value_error(options, words):
@@ -46,8 +48,11 @@ def test_option_of_wrong_type_raises_type_error():
 
 
 def test_options_round_trip():
-    options = scbt.Tracker(detector="lsd", filter_distance=12.5, seed_stride=3).options
-    assert options["detector"] == "lsd"
+    options = scbt.Tracker(
+        detector="lsd", filter_distance=12.5, seed_stride=3, max_segments=40, crop_to_boundary=False
+    ).options
+    assert options["detector"] == "lsd" and options["max_segments"] == 40
+    assert options["crop_to_boundary"] is False
     assert options["filter_distance"] == 12.5 and options["seed_stride"] == 3
 
 

@@ -156,3 +156,14 @@ def test_debug_segments_and_annotation(moving_pentagon):
     drawn = tracker.annotate(frames[1], "frame 2")
     assert drawn.shape == frames[1].shape + (3,) and drawn.dtype == np.uint8
     assert (drawn != frames[1][:, :, None]).any()
+
+
+def test_max_segments_caps_the_kept_segments(moving_pentagon):
+    frames, truths = moving_pentagon
+    free, capped = scbt.Tracker(), scbt.Tracker(max_segments=3)
+    for tracker in (free, capped):
+        tracker.init(frames[0], truths[0])
+    _, s_free = free.track(frames[1])
+    _, s_capped = capped.track(frames[1])
+    assert s_free.num_dropped == 0 and s_free.num_kept > 3
+    assert s_capped.num_kept == 3 and s_capped.num_dropped == s_free.num_kept - 3
