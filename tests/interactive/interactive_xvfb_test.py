@@ -3,10 +3,11 @@
 
 A generated video of a moving quadrilateral over clutter is opened in the interactive window;
 xdotool clicks the four corners of the first frame's outline, presses Enter (close), s (one
-step) and space (run to the end of the input). Then an X screenshot of the whole screen is taken
-and Esc quits. The test checks the results file (first line = the clicked polygon, last line on
-the moved outline), the saved input and annotated videos, and that the screenshot shows the
-yellow boundary on the moved outline and red detected segments.
+step) and space (run to the end of the input). Then an X screenshot of the whole screen is taken,
+r re-initialises with four clicks closed by a middle click, and Esc quits. The test checks the
+results file (first line = the clicked polygon, the tracked lines on the moved outline, the last
+line replaced by the re-drawn polygon), the saved input and annotated videos, and that the
+screenshot shows the yellow boundary on the moved outline and red detected segments.
 
 Usage: interactive_xvfb_test.py SCBT_BINARY WORK_DIR
 Exit code 77 (ctest SKIP_RETURN_CODE) when Xvfb, xdotool, xwd/convert or cv2 are missing.
@@ -140,6 +141,7 @@ def main():
         time.sleep(0.5)  # let the first frame be drawn
 
         clicked = np.round(FIRST + [1, -1]).astype(int)  # the user is a pixel off
+        redrawn = np.array([[40, 40], [120, 40], [120, 100], [40, 100]])
         for x, y in clicked:
             xdo("mousemove", "--window", window, str(x), str(y), "click", "1")
             time.sleep(0.15)
@@ -156,6 +158,14 @@ def main():
                                  capture_output=True, timeout=30).stdout
             subprocess.run(["convert", "xwd:-", "png:-"], input=xwd, stdout=out, check=True,
                            timeout=30)
+        # Re-initialise on the last frame: r, four clicks, a middle click closes.
+        xdo("key", "r")
+        wait_for(lambda: "mode drawing at frame 30" in log_text(), "drawing mode")
+        for x, y in redrawn:
+            xdo("mousemove", "--window", window, str(x), str(y), "click", "1")
+            time.sleep(0.15)
+        xdo("click", "2")
+        wait_for(lambda: "boundary of 4 vertices set on frame 30" in log_text(), "re-init")
         xdo("key", "Escape")
         assert app.wait(timeout=30) == 0, log_text()
         print(log_text())
@@ -171,10 +181,13 @@ def main():
     assert len(lines) == FRAMES, f"{len(lines)} result lines for {FRAMES} frames"
     first = parse_line(lines[0])
     assert np.abs(first - clicked).max() <= 1.0, (first, clicked)
+    # The re-initialisation replaced the last frame's line.
+    assert np.abs(parse_line(lines[-1]) - redrawn).max() <= 1.0, lines[-1]
+    lines = lines[:-1]
     errors = [boundary_error(parse_line(line), outline(k)) for k, line in enumerate(lines)]
     print("boundary error per frame (px):", " ".join(f"{e:.2f}" for e in errors))
     assert max(errors[1:]) < 3.0, errors
-    last = parse_line(lines[-1])
+    last = parse_line(lines[-1])  # frame 29's tracked boundary
 
     for path in (saved_input, annotated):
         capture = cv2.VideoCapture(path)
@@ -200,7 +213,7 @@ def main():
     share = near / len(samples)
     print(f"screenshot: {yellow.sum()} yellow px, {red.sum()} red px, "
           f"{share:.0%} of the last outline has the yellow boundary within 3 px; "
-          f"last boundary error {boundary_error(last, outline(FRAMES - 1)):.2f} px")
+          f"frame 29 boundary error {boundary_error(last, outline(FRAMES - 2)):.2f} px")
     assert share > 0.9, share
     assert red.sum() > 50, red.sum()
     print("PASS")
