@@ -10,6 +10,7 @@ packages=(
   libcli11-dev nlohmann-json3-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   clang-format
+  clang libclang-rt-14-dev
   pybind11-dev python3-dev python3-numpy python3-pytest python3-opencv
   xvfb xdotool x11-apps imagemagick
 )

@@ -290,6 +290,12 @@ TrackSummary run_track(const TrackRunOptions& options, std::ostream& log) {
     if (summary.expected_frames > 0) log << " of " << summary.expected_frames;
     log << "; " << options.output << " holds frames 1.." << summary.frames << "\n";
   }
+  const bool cut_short = options.max_frames > 0 && summary.frames >= options.max_frames;
+  if (summary.stop_signal == 0 && !cut_short && summary.expected_frames > 0 &&
+      summary.frames < summary.expected_frames) {
+    log << "scbt: warning: " << options.input << " ended after frame " << summary.frames
+        << " of the " << summary.expected_frames << " it announced\n";
+  }
   if (summary.bad_frames > 0) {
     log << "scbt: warning: " << summary.bad_frames << " bad frame(s) reported and held\n";
   }

@@ -12,8 +12,10 @@ class FrameSource {
  public:
   virtual ~FrameSource() = default;
 
-  // Reads the next frame into `frame`; false at the end of the input. Throws std::runtime_error
-  // naming the frame when a frame exists but cannot be decoded.
+  // Reads the next frame into `frame` (8-bit, 1, 3 or 4 channels; 16-bit images are scaled down);
+  // false at the end of the input. Throws std::runtime_error naming the frame when a frame exists
+  // but cannot be decoded (also a truncated JPEG / PNG, which decoders would fill with grey);
+  // reading may go on after that, with the next frame.
   virtual bool read(cv::Mat* frame) = 0;
   // Number of frames when known in advance, else -1 (cameras, some videos).
   virtual int frame_count() const = 0;
