@@ -1,12 +1,12 @@
 // End-to-end accuracy regression on the public dataset (skipped when it is absent): scbt's
 // default tracker, run by the same code as `scbt eval`, must keep each sequence's success rate
-// at 10 px (E_AL < 10) at or above a floor. The floors are the rates measured when the stabilised
-// choice landed, minus 0.01 for run-to-run noise, so any accuracy loss shows up here.
+// at 10 px (E_AL < 10) at or above a floor. The floors are the rates measured when recovery by
+// image motion landed, minus 0.01 for run-to-run noise, so any accuracy loss shows up here.
 #include <gtest/gtest.h>
 
 #include <cstdlib>
-#include <iostream>
 #include <filesystem>
+#include <iostream>
 #include <map>
 #include <sstream>
 
@@ -21,9 +21,9 @@ TEST(DatasetRegression, SuccessAt10PxStaysAboveFloors) {
       !std::filesystem::is_directory(std::string(dataset) + "/OriginalVideosAVI")) {
     GTEST_SKIP() << "dataset not found (set SCBT_DATASET); skipping the accuracy regression";
   }
-  const std::map<std::string, double> floors = {{"BookStand", 0.979}, {"Bowl", 0.99},
-                                                {"MarkCup", 0.988},   {"MarkCupContour", 0.979},
-                                                {"ToolBox", 0.778},   {"TransparentCup", 0.99}};
+  const std::map<std::string, double> floors = {{"BookStand", 0.978}, {"Bowl", 0.99},
+                                                {"MarkCup", 0.984},   {"MarkCupContour", 0.983},
+                                                {"ToolBox", 0.989},   {"TransparentCup", 0.99}};
 
   EvalRunOptions options;
   options.dataset = dataset;

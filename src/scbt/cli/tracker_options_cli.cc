@@ -19,6 +19,10 @@ void add_tracker_options(CLI::App* command, TrackerOptions* options, std::string
                    "closest to the previous boundary wins (0: the paper's rule)")
       ->capture_default_str();
   command
+      ->add_option("--recover-by-motion", options->recover_by_motion,
+                   "When lost, search again where image motion moved the boundary (true/false)")
+      ->capture_default_str();
+  command
       ->add_option("--seed-stride", options->bdsp.seed_stride,
                    "BDSP seeds every Nth detected segment (the paper: 2)")
       ->capture_default_str();

@@ -11,6 +11,7 @@
 #include "scbt/grouping/boundary_choice.h"
 #include "scbt/grouping/segment_filter.h"
 #include "scbt/lines/line_detector.h"
+#include "scbt/tracker/motion_estimate.h"
 
 namespace scbt {
 namespace {
@@ -68,65 +69,103 @@ void Tracker::init(const cv::Mat& frame, const Polygon& polygon) {
   }
   boundary_ = polygon;
   boundary_area_ = area(polygon);
+  reference_roi_ = cv::Rect(cv::Point(0, 0), frame.size());
+  to_gray(frame, &reference_gray_);
+  reference_gray_ = reference_gray_.clone();
   frame_size_ = frame.size();
+}
+
+Tracker::Attempt Tracker::attempt(const cv::Mat& frame, const Polygon& prior) {
+  Attempt a;
+  const Clock::time_point line_start = Clock::now();
+  // Only segments near the prior boundary can survive the distance filter, so only the window
+  // around it is converted and searched (crop_to_boundary; whole frame otherwise).
+  a.roi = cv::Rect(cv::Point(0, 0), frame_size_);
+  if (options_.detector.crop_to_boundary) {
+    a.roi =
+        detection_roi(prior, options_.filter_distance + options_.detector.roi_padding, frame_size_);
+    if (a.roi.empty()) a.roi = cv::Rect(cv::Point(0, 0), frame_size_);
+  }
+  to_gray(frame(a.roi), &gray_);
+  a.detected = detector_->detect_in(gray_, a.roi.tl(), frame_size_);
+  a.line_ms = elapsed_ms(line_start);
+
+  const Clock::time_point grouping_start = Clock::now();
+  a.kept = filter_segments_near_boundary(a.detected, prior, options_.filter_distance);
+  if (static_cast<int>(a.kept.size()) > options_.max_segments) {
+    a.num_dropped = static_cast<int>(a.kept.size()) - options_.max_segments;
+    std::nth_element(a.kept.begin(), a.kept.begin() + options_.max_segments, a.kept.end(),
+                     [](const Segment& l, const Segment& r) { return l.length() > r.length(); });
+    a.kept.resize(options_.max_segments);
+  }
+  a.graph = build_segment_graph(a.kept);
+  a.candidates = search_cycle_candidates(a.graph, options_.bdsp);
+  a.choice = choose_boundary_stable(a.candidates, a.graph, prior, options_.min_area_similarity,
+                                    options_.cost_tolerance);
+  a.grouping_ms = elapsed_ms(grouping_start);
+  return a;
 }
 
 TrackResult Tracker::track(const cv::Mat& frame) {
   if (!initialized()) throw std::logic_error("Tracker::track called before init");
-  TrackResult result;
-
-  const Clock::time_point line_start = Clock::now();
   if (frame.empty()) to_gray(frame, &gray_);  // throws
   if (frame.size() != frame_size_) {
     throw std::invalid_argument("frame size changed from " + std::to_string(frame_size_.width) +
                                 "x" + std::to_string(frame_size_.height) + " to " +
                                 std::to_string(frame.cols) + "x" + std::to_string(frame.rows));
   }
-  // Only segments near the previous boundary can survive the distance filter, so only the
-  // window around it is converted and searched (crop_to_boundary; whole frame otherwise).
-  cv::Rect roi(cv::Point(0, 0), frame_size_);
-  if (options_.detector.crop_to_boundary) {
-    roi = detection_roi(boundary_, options_.filter_distance + options_.detector.roi_padding,
-                        frame_size_);
-    if (roi.empty()) roi = cv::Rect(cv::Point(0, 0), frame_size_);
-  }
-  to_gray(frame(roi), &gray_);
-  std::vector<Segment> detected = detector_->detect_in(gray_, roi.tl(), frame_size_);
-  result.line_ms = elapsed_ms(line_start);
+  TrackResult result;
+  Attempt a = attempt(frame, boundary_);
+  result.line_ms = a.line_ms;
+  result.grouping_ms = a.grouping_ms;
 
-  const Clock::time_point grouping_start = Clock::now();
-  std::vector<Segment> kept =
-      filter_segments_near_boundary(detected, boundary_, options_.filter_distance);
-  if (static_cast<int>(kept.size()) > options_.max_segments) {
-    result.num_dropped = static_cast<int>(kept.size()) - options_.max_segments;
-    std::nth_element(
-        kept.begin(), kept.begin() + options_.max_segments, kept.end(),
-        [](const Segment& a, const Segment& b) { return a.length() > b.length(); });
-    kept.resize(options_.max_segments);
+  // Lost: the boundary may have moved out of the search band (fast motion, camera swing).
+  // Estimate how the content around it moved since it was last tracked, and search again there.
+  if (!a.choice && options_.recover_by_motion && !reference_gray_.empty()) {
+    const Clock::time_point recover_start = Clock::now();
+    cv::Mat current;
+    to_gray(frame(reference_roi_), &current);
+    const std::optional<TranslationEstimate> motion =
+        estimate_translation(reference_gray_, current);
+    result.grouping_ms += elapsed_ms(recover_start);
+    // A move well inside the search band was already searched; re-searching near the same place
+    // only invites a worse cycle, so only a move of at least half the band is followed.
+    if (motion && cv::norm(motion->shift) >= 0.5 * options_.filter_distance) {
+      Polygon moved = boundary_;
+      for (Point& p : moved) p += motion->shift;
+      Attempt retry = attempt(frame, moved);
+      result.line_ms += retry.line_ms;
+      result.grouping_ms += retry.grouping_ms;
+      if (retry.choice) {
+        a = std::move(retry);
+        result.recovered = true;
+      }
+    }
   }
-  SegmentGraph graph = build_segment_graph(kept);
-  const std::vector<CycleCandidate> candidates = search_cycle_candidates(graph, options_.bdsp);
-  const std::optional<BoundaryChoice> choice = choose_boundary_stable(
-      candidates, graph, boundary_, options_.min_area_similarity, options_.cost_tolerance);
-  if (choice) {
-    boundary_ = candidate_polygon(graph, candidates[choice->index]);
-    boundary_area_ = candidates[choice->index].area;
-    result.cost = choice->cost;
-    result.area_similarity = choice->similarity;
+
+  if (a.choice) {
+    boundary_ = candidate_polygon(a.graph, a.candidates[a.choice->index]);
+    boundary_area_ = a.candidates[a.choice->index].area;
+    result.cost = a.choice->cost;
+    result.area_similarity = a.choice->similarity;
+    if (options_.recover_by_motion) {
+      reference_roi_ = a.roi;
+      reference_gray_ = gray_.clone();
+    }
   } else {
     result.held = true;
   }
-  result.grouping_ms = elapsed_ms(grouping_start);
 
   result.boundary = boundary_;
-  result.num_detected = static_cast<int>(detected.size());
-  result.num_kept = static_cast<int>(kept.size());
-  result.num_vertices = graph.num_vertices();
-  result.num_edges = graph.num_edges();
-  result.num_candidates = static_cast<int>(candidates.size());
+  result.num_detected = static_cast<int>(a.detected.size());
+  result.num_kept = static_cast<int>(a.kept.size());
+  result.num_dropped = a.num_dropped;
+  result.num_vertices = a.graph.num_vertices();
+  result.num_edges = a.graph.num_edges();
+  result.num_candidates = static_cast<int>(a.candidates.size());
   if (keep_debug_) {
-    debug_.detected = std::move(detected);
-    debug_.graph = std::move(graph);
+    debug_.detected = std::move(a.detected);
+    debug_.graph = std::move(a.graph);
   }
   return result;
 }

@@ -3,8 +3,11 @@
 
 #include <memory>
 #include <opencv2/core/mat.hpp>
+#include <optional>
 
 #include "scbt/geometry/polygon.h"
+#include "scbt/grouping/bdsp.h"
+#include "scbt/grouping/boundary_choice.h"
 #include "scbt/grouping/segment_graph.h"
 #include "scbt/tracker/tracker_options.h"
 
@@ -13,6 +16,7 @@ namespace scbt {
 struct TrackResult {
   Polygon boundary;              // the tracked boundary (the previous one when held)
   bool held = false;             // no admissible candidate: the previous boundary was kept
+  bool recovered = false;        // found again where image motion moved it (after a miss)
   double cost = 0.0;             // grouping cost Γ of the chosen cycle (Eq. 1)
   double area_similarity = 0.0;  // Eq. 2 between the chosen cycle and the previous boundary
   int num_detected = 0;          // segments from the line detector
@@ -61,6 +65,24 @@ class Tracker {
   double boundary_area_ = 0.0;
   cv::Size frame_size_;
   cv::Mat gray_;
+  // The grey window around the boundary the last time it was tracked, for re-finding it by
+  // image motion when it is lost (TrackerOptions::recover_by_motion).
+  cv::Mat reference_gray_;
+  cv::Rect reference_roi_;
+
+  // One pass of the per-frame pipeline searching around `prior`.
+  struct Attempt {
+    cv::Rect roi;
+    std::vector<Segment> detected;
+    std::vector<Segment> kept;
+    int num_dropped = 0;
+    SegmentGraph graph;
+    std::vector<CycleCandidate> candidates;
+    std::optional<BoundaryChoice> choice;
+    double line_ms = 0.0;
+    double grouping_ms = 0.0;
+  };
+  Attempt attempt(const cv::Mat& frame, const Polygon& prior);
   bool keep_debug_ = false;
   TrackDebug debug_;
 };

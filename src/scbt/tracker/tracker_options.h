@@ -17,6 +17,9 @@ struct TrackerOptions {
   // the previous boundary wins (choose_boundary_stable). 0 is the paper's rule. 0.1 stops the
   // outward ratchet (inner -> outer rim -> table edges) that Γ alone allows.
   double cost_tolerance = 0.1;
+  // When no candidate qualifies, estimate the image motion around the boundary since it was last
+  // tracked (phase correlation) and search again where it moved, instead of holding it in place.
+  bool recover_by_motion = true;
   BdspOptions bdsp;
   // Bound on the work per frame: when more segments than this pass the distance filter, only the
   // longest are kept (TrackResult::num_dropped counts the rest). BDSP grows about quadratically.

@@ -1,0 +1,78 @@
+// A camera swing moves the whole picture farther than the search band in one frame: without
+// recovery the boundary is held where it was; with recovery by image motion it is found again.
+#include <gtest/gtest.h>
+
+#include <opencv2/imgproc.hpp>
+
+#include "scbt/tracker/tracker.h"
+
+namespace scbt {
+namespace {
+
+Polygon hexagon(Point center, double radius) {
+  Polygon polygon;
+  for (int k = 0; k < 6; ++k) {
+    const double angle = CV_PI / 3.0 * k + 0.2;
+    polygon.emplace_back(center.x + radius * std::cos(angle), center.y + radius * std::sin(angle));
+  }
+  return polygon;
+}
+
+// A textured scene (so image motion is measurable) with a flat, dark hexagon in it.
+cv::Mat render_scene(unsigned seed) {
+  cv::Mat scene(720, 960, CV_8U);
+  cv::RNG rng(seed);
+  rng.fill(scene, cv::RNG::UNIFORM, 90, 200);
+  cv::GaussianBlur(scene, scene, cv::Size(0, 0), 3.0);
+  std::vector<cv::Point> points;
+  for (const Point& p : hexagon({480, 360}, 70)) points.emplace_back(cvRound(p.x), cvRound(p.y));
+  cv::fillPoly(scene, std::vector<std::vector<cv::Point>>{points}, cv::Scalar(20), cv::LINE_AA);
+  return scene;
+}
+
+// The 640x480 view of the scene whose top-left corner is at `corner`.
+cv::Mat view(const cv::Mat& scene, cv::Point corner) {
+  return scene(cv::Rect(corner, cv::Size(640, 480))).clone();
+}
+
+double mean_vertex_distance(const Polygon& tracked, const Polygon& truth) {
+  double sum = 0.0;
+  for (const Point& p : tracked) sum += distance_to_boundary(p, truth);
+  return sum / static_cast<double>(tracked.size());
+}
+
+class RecoveryTest : public ::testing::TestWithParam<int> {};
+
+TEST_P(RecoveryTest, FollowsACameraSwingBeyondTheBand) {
+  const int seed = GetParam();
+  const cv::Mat scene = render_scene(100 + seed);
+  const cv::Point start(160, 120);
+  // The picture jumps by 34..46 px: far beyond the 20 px band around the previous boundary.
+  const cv::Point swing(-(30 + 4 * seed), 20 + 2 * seed);
+  const Polygon truth_before = hexagon({480.0 - start.x, 360.0 - start.y}, 70);
+  Polygon truth_after = truth_before;
+  for (Point& p : truth_after) p -= Point(swing.x, swing.y);
+
+  for (const bool recover : {false, true}) {
+    TrackerOptions options;
+    options.recover_by_motion = recover;
+    Tracker tracker(options);
+    tracker.init(view(scene, start), truth_before);
+    const TrackResult steady = tracker.track(view(scene, start));
+    ASSERT_FALSE(steady.held);
+    const TrackResult moved = tracker.track(view(scene, start + swing));
+    if (recover) {
+      EXPECT_FALSE(moved.held);
+      EXPECT_TRUE(moved.recovered);
+      EXPECT_LT(mean_vertex_distance(moved.boundary, truth_after), 2.0);
+    } else {
+      EXPECT_TRUE(moved.held);
+      EXPECT_FALSE(moved.recovered);
+    }
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(Seeds, RecoveryTest, ::testing::Range(0, 4));
+
+}  // namespace
+}  // namespace scbt
