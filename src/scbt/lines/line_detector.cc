@@ -73,6 +73,23 @@ class EdLinesDetector : public LineDetector {
       input = &contiguous_;
     }
     detector_->detectEdges(*input);
+    // OpenCV 4.6's detectLines copies every edge segment into scratch arrays of (cols + rows) * 8
+    // doubles without a bound check (opencv_contrib #3429, #4205): a longer, winding segment
+    // overflows the heap (a serpentine stroke crashes it). Such an image gets LSD's lines.
+    const size_t capacity = static_cast<size_t>(input->cols + input->rows) * 8;
+    for (const std::vector<cv::Point>& segment : detector_->getSegments()) {
+      if (segment.size() >= capacity) {
+        if (!fallback_) fallback_ = cv::createLineSegmentDetector(cv::LSD_REFINE_STD);
+        fallback_->detect(*input, lines_);
+        const float min_length = static_cast<float>(std::max(applied_min_length_, 1));
+        lines_.erase(std::remove_if(lines_.begin(), lines_.end(),
+                                    [min_length](const cv::Vec4f& l) {
+                                      return std::hypot(l[2] - l[0], l[3] - l[1]) < min_length;
+                                    }),
+                     lines_.end());
+        return;
+      }
+    }
     detector_->detectLines(lines_);
   }
 
@@ -81,6 +98,7 @@ class EdLinesDetector : public LineDetector {
   int applied_min_length_ = 0;  // never a value set_min_line_length is called with
   cv::Mat contiguous_;
   std::vector<cv::Vec4f> lines_;
+  cv::Ptr<cv::LineSegmentDetector> fallback_;  // for images detectLines cannot take
 };
 
 class LsdDetector : public LineDetector {
