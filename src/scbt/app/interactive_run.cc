@@ -1,6 +1,7 @@
 #include "scbt/app/interactive_run.h"
 
 #include <algorithm>
+#include <cstdlib>
 #include <deque>
 #include <memory>
 #include <opencv2/highgui.hpp>
@@ -181,6 +182,12 @@ const char* mode_name(InteractiveMode mode) {
 
 InteractiveSummary run_interactive(const InteractiveRunOptions& options, std::ostream& log) {
   const TrackRunOptions& track = options.track;
+  // Without a display the GUI toolkit would abort the process; fail with a message instead.
+  const char* display = std::getenv("DISPLAY");
+  const char* wayland = std::getenv("WAYLAND_DISPLAY");
+  if ((display == nullptr || *display == '\0') && (wayland == nullptr || *wayland == '\0')) {
+    throw std::runtime_error("the interactive window needs a display: DISPLAY is not set");
+  }
   const bool has_init = !track.init_file.empty() || !track.init_points.empty();
   const Polygon initial = has_init ? load_initial_polygon(track) : Polygon{};
   Tracker tracker(track.tracker);
