@@ -23,6 +23,10 @@ void add_bench_command(CLI::App& app, int* exit_code) {
                     "Detect lines on the whole frame in the configuration under test too");
   command->add_flag("--no-compare", *no_compare,
                     "Skip the straightforward (whole-frame) configuration");
+  command
+      ->add_option("--roi-padding", options->tracker.detector.roi_padding,
+                   "Pixels added around the filter band of the detection window")
+      ->capture_default_str();
   command->add_flag("-q,--quiet", options->quiet, "No progress bars");
   add_tracker_options(command, &options->tracker, detector.get());
   command->callback([options, detector, full_frame, no_compare, exit_code] {

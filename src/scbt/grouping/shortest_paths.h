@@ -24,10 +24,20 @@ class ShortestPaths {
 
  private:
   static constexpr int kUnreached = -2;
+  // Vertices leave the queue in (distance, vertex id) order, so the result (ties included) does
+  // not depend on how the queue is organised.
+  bool before(int a, int b) const {
+    return distance_[a] < distance_[b] || (distance_[a] == distance_[b] && a < b);
+  }
+  void sift_up(int position);
+  void sift_down(int position);
+
   std::vector<double> distance_;
   std::vector<int> parent_edge_;
   std::vector<int> parent_vertex_;
-  std::vector<std::pair<double, int>> heap_;
+  // Indexed 4-ary heap of vertices with decrease-key; heap_position_ is -1 outside the heap.
+  std::vector<int> heap_;
+  std::vector<int> heap_position_;
 };
 
 }  // namespace scbt

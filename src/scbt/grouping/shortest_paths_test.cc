@@ -3,9 +3,13 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <functional>
 #include <limits>
 #include <random>
+#include <utility>
+#include <vector>
 
 namespace scbt {
 namespace {
@@ -152,6 +156,66 @@ TEST(ShortestPaths, UnreachableVertex) {
   EXPECT_TRUE(std::isinf(paths.distance(2)));
   paths.run(graph, 0, 0);
   EXPECT_FALSE(paths.reached(1));
+}
+
+// The textbook lazy-deletion binary-heap Dijkstra (the first implementation): the optimised
+// queue must give the same parents, ties included, since BDSP's candidates follow them.
+struct LazyDijkstra {
+  std::vector<double> distance;
+  std::vector<int> parent_edge, parent_vertex;
+  void run(const SegmentGraph& graph, int source, int blocked) {
+    const int n = graph.num_vertices();
+    distance.assign(n, kInf);
+    parent_edge.assign(n, -2);
+    parent_vertex.assign(n, -1);
+    std::vector<std::pair<double, int>> heap;
+    distance[source] = 0.0;
+    parent_edge[source] = -1;
+    heap.emplace_back(0.0, source);
+    while (!heap.empty()) {
+      std::pop_heap(heap.begin(), heap.end(), std::greater<>());
+      const auto [d, u] = heap.back();
+      heap.pop_back();
+      if (d > distance[u]) continue;
+      for (int k = graph.adjacency_begin[u]; k < graph.adjacency_begin[u + 1]; ++k) {
+        const SegmentGraph::Incidence& next = graph.adjacency[k];
+        if (next.edge == blocked) continue;
+        const double candidate = d + graph.edges[next.edge].weight;
+        if (candidate < distance[next.vertex]) {
+          distance[next.vertex] = candidate;
+          parent_edge[next.vertex] = next.edge;
+          parent_vertex[next.vertex] = u;
+          heap.emplace_back(candidate, next.vertex);
+          std::push_heap(heap.begin(), heap.end(), std::greater<>());
+        }
+      }
+    }
+  }
+};
+
+// Integer weights (many equal path lengths) and zero-weight detected edges make ties common.
+TEST(ShortestPaths, SameParentsAsLazyHeapDijkstraWithTies) {
+  std::mt19937 rng(77);
+  ShortestPaths paths;  // reused across graphs of different sizes
+  LazyDijkstra reference;
+  for (int trial = 0; trial < 300; ++trial) {
+    std::uniform_int_distribution<int> size(2, 120);
+    const int n = size(rng);
+    SegmentGraph graph = random_graph(rng, n, 3 * n);
+    std::uniform_int_distribution<int> small(0, 4);
+    for (GraphEdge& e : graph.edges) e.weight = e.detected ? 0.0 : small(rng);
+    const int source = std::uniform_int_distribution<int>(0, n - 1)(rng);
+    const int blocked = std::uniform_int_distribution<int>(-1, graph.num_edges() - 1)(rng);
+    paths.run(graph, source, blocked);
+    reference.run(graph, source, blocked);
+    for (int v = 0; v < n; ++v) {
+      ASSERT_EQ(paths.reached(v), reference.parent_edge[v] != -2) << trial << " v " << v;
+      if (!paths.reached(v)) continue;
+      EXPECT_EQ(paths.distance(v), reference.distance[v]) << trial << " v " << v;
+      EXPECT_EQ(paths.parent_edge(v), reference.parent_edge[v]) << trial << " v " << v;
+      EXPECT_EQ(paths.parent_vertex(v), reference.parent_vertex[v]) << trial << " v " << v;
+    }
+  }
 }
 
 }  // namespace
