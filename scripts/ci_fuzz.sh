@@ -16,7 +16,7 @@ for target in polygon_parser tracker; do
   corpus="$build/corpus/$target"
   mkdir -p "$corpus"
   "$build/fuzz/fuzz_$target" -max_total_time="$seconds" -print_final_stats=1 -max_len=4096 \
-    -timeout=10 -rss_limit_mb=2048 "$corpus" "fuzz/corpus/$target" 2>"$build/fuzz_$target.log" || {
+    -timeout=10 -rss_limit_mb=2048 -artifact_prefix="$build/" "$corpus" "fuzz/corpus/$target" 2>"$build/fuzz_$target.log" || {
     tail -n 60 "$build/fuzz_$target.log"
     exit 1
   }

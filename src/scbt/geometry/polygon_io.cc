@@ -83,8 +83,16 @@ std::string format_polygon_line(const Polygon& polygon) {
   std::string out = std::to_string(polygon.size());
   char buffer[64];
   for (const Point& p : polygon) {
-    std::snprintf(buffer, sizeof(buffer), " %.2f %.2f", p.x, p.y);
-    out += buffer;
+    // Huge coordinates (up to 1e308 has 309 digits) need more than the buffer: never truncate.
+    const int needed = std::snprintf(buffer, sizeof(buffer), " %.2f %.2f", p.x, p.y);
+    if (needed < static_cast<int>(sizeof(buffer))) {
+      out += buffer;
+      continue;
+    }
+    std::string wide(static_cast<size_t>(needed) + 1, '\0');
+    std::snprintf(wide.data(), wide.size(), " %.2f %.2f", p.x, p.y);
+    wide.resize(static_cast<size_t>(needed));
+    out += wide;
   }
   return out;
 }
