@@ -1,6 +1,7 @@
 #include "scbt/app/bench_run.h"
 
 #include <sys/resource.h>
+#include <time.h>
 
 #include <algorithm>
 #include <chrono>
@@ -23,6 +24,12 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
+double thread_cpu_ms() {
+  timespec t{};
+  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
+  return t.tv_sec * 1e3 + t.tv_nsec * 1e-6;
+}
+
 long peak_rss_kb() {
   rusage usage{};
   getrusage(RUSAGE_SELF, &usage);
@@ -43,7 +50,7 @@ std::vector<Polygon> read_truth(const std::string& path) {
 struct Samples {
   std::string config;
   std::unique_ptr<Tracker> tracker;
-  std::vector<double> line, grouping, total;
+  std::vector<double> line, grouping, total, cpu;
   std::vector<double> errors;
   int held = 0;
   double detected = 0.0;
@@ -55,6 +62,7 @@ BenchConfigResult summarise(const Samples& s) {
   r.line = time_stats(s.line);
   r.grouping = time_stats(s.grouping);
   r.total = time_stats(s.total);
+  r.cpu = time_stats(s.cpu);
   r.fps = r.total.mean > 0.0 ? 1000.0 / r.total.mean : 0.0;
   r.held = s.held;
   r.success_10px = success_rate(s.errors, 10.0);
@@ -106,7 +114,8 @@ BenchReport run_bench(const BenchRunOptions& options, std::ostream& log) {
     csv = std::make_unique<AtomicFile>(options.csv);
     csv->stream() << "sequence,config,frames,line_median_ms,line_p90_ms,line_p99_ms,"
                      "grouping_median_ms,grouping_p90_ms,grouping_p99_ms,total_mean_ms,"
-                     "total_median_ms,total_p90_ms,total_p99_ms,fps,held,success_10px,"
+                     "total_median_ms,total_p90_ms,total_p99_ms,cpu_mean_ms,cpu_median_ms,fps,held,"
+                     "success_10px,"
                      "mean_detected,peak_rss_kb\n";
   }
 
@@ -120,11 +129,13 @@ BenchReport run_bench(const BenchRunOptions& options, std::ostream& log) {
     }
 
     std::vector<Samples> runs;
-    runs.push_back({"optimised", std::make_unique<Tracker>(options.tracker), {}, {}, {}, {}, 0, 0});
+    runs.push_back(
+        {"optimised", std::make_unique<Tracker>(options.tracker), {}, {}, {}, {}, {}, 0, 0});
     if (options.compare) {
       TrackerOptions plain = options.tracker;
       plain.detector.crop_to_boundary = false;
-      runs.push_back({"straightforward", std::make_unique<Tracker>(plain), {}, {}, {}, {}, 0, 0});
+      runs.push_back(
+          {"straightforward", std::make_unique<Tracker>(plain), {}, {}, {}, {}, {}, 0, 0});
     }
 
     cv::Mat frame;
@@ -138,8 +149,10 @@ BenchReport run_bench(const BenchRunOptions& options, std::ostream& log) {
     int frames = 1;
     while ((options.max_frames == 0 || frames < options.max_frames) && source->read(&frame)) {
       for (Samples& run : runs) {
+        const double cpu_start = thread_cpu_ms();
         const Clock::time_point start = Clock::now();
         const TrackResult result = run.tracker->track(frame);
+        run.cpu.push_back(thread_cpu_ms() - cpu_start);
         run.total.push_back(
             std::chrono::duration<double, std::milli>(Clock::now() - start).count());
         run.line.push_back(result.line_ms);
@@ -169,8 +182,9 @@ BenchReport run_bench(const BenchRunOptions& options, std::ostream& log) {
                       << c.line.median << ',' << c.line.p90 << ',' << c.line.p99 << ','
                       << c.grouping.median << ',' << c.grouping.p90 << ',' << c.grouping.p99 << ','
                       << c.total.mean << ',' << c.total.median << ',' << c.total.p90 << ','
-                      << c.total.p99 << ',' << c.fps << ',' << c.held << ',' << c.success_10px
-                      << ',' << c.mean_detected << ',' << result.peak_rss_kb << '\n';
+                      << c.total.p99 << ',' << c.cpu.mean << ',' << c.cpu.median << ',' << c.fps
+                      << ',' << c.held << ',' << c.success_10px << ',' << c.mean_detected << ','
+                      << result.peak_rss_kb << '\n';
       }
     }
     report.sequences.push_back(std::move(result));
@@ -179,11 +193,18 @@ BenchReport run_bench(const BenchRunOptions& options, std::ostream& log) {
   for (const BenchSequenceResult& s : report.sequences) {
     report.mean_total_ms += s.configs[0].total.mean;
     report.slowest_total_ms = std::max(report.slowest_total_ms, s.configs[0].total.mean);
-    if (s.configs.size() > 1) report.baseline_mean_total_ms += s.configs[1].total.mean;
+    report.mean_cpu_ms += s.configs[0].cpu.mean;
+    report.slowest_cpu_ms = std::max(report.slowest_cpu_ms, s.configs[0].cpu.mean);
+    if (s.configs.size() > 1) {
+      report.baseline_mean_total_ms += s.configs[1].total.mean;
+      report.baseline_mean_cpu_ms += s.configs[1].cpu.mean;
+    }
   }
   if (!report.sequences.empty()) {
     report.mean_total_ms /= static_cast<double>(report.sequences.size());
     report.baseline_mean_total_ms /= static_cast<double>(report.sequences.size());
+    report.mean_cpu_ms /= static_cast<double>(report.sequences.size());
+    report.baseline_mean_cpu_ms /= static_cast<double>(report.sequences.size());
   }
   if (csv) csv->commit();
   return report;
@@ -192,8 +213,10 @@ BenchReport run_bench(const BenchRunOptions& options, std::ostream& log) {
 std::string format_bench_report(const BenchReport& report) {
   std::ostringstream out;
   out << "| sequence | config | frames | line ms median/p90/p99 | grouping ms median/p90/p99 | "
-         "total ms mean/median/p90/p99 | fps | held | success@10px | peak RSS MB | speed-up |\n"
-         "|---|---|---|---|---|---|---|---|---|---|---|\n";
+         "total ms mean/median/p90/p99 | CPU ms mean/median | fps | held | success@10px | peak RSS "
+         "MB | "
+         "speed-up |\n"
+         "|---|---|---|---|---|---|---|---|---|---|---|---|\n";
   for (const BenchSequenceResult& s : report.sequences) {
     for (size_t k = 0; k < s.configs.size(); ++k) {
       const BenchConfigResult& c = s.configs[k];
@@ -202,7 +225,8 @@ std::string format_bench_report(const BenchReport& report) {
           << fixed(c.line.p99, 3) << " | " << fixed(c.grouping.median, 3) << " / "
           << fixed(c.grouping.p90, 3) << " / " << fixed(c.grouping.p99, 3) << " | "
           << fixed(c.total.mean, 3) << " / " << fixed(c.total.median, 3) << " / "
-          << fixed(c.total.p90, 3) << " / " << fixed(c.total.p99, 3) << " | " << fixed(c.fps, 0)
+          << fixed(c.total.p90, 3) << " / " << fixed(c.total.p99, 3) << " | "
+          << fixed(c.cpu.mean, 3) << " / " << fixed(c.cpu.median, 3) << " | " << fixed(c.fps, 0)
           << " | " << c.held << " | " << fixed(c.success_10px, 3) << " | "
           << fixed(s.peak_rss_kb / 1024.0, 1) << " | "
           << (k == 0 && s.speedup > 0.0 ? fixed(s.speedup, 2) + "x" : std::string("")) << " |\n";
@@ -220,6 +244,12 @@ std::string format_bench_report(const BenchReport& report) {
   if (report.baseline_mean_total_ms > 0.0) {
     out << "; straightforward: " << fixed(report.baseline_mean_total_ms, 3) << " ms ("
         << fixed(report.baseline_mean_total_ms / std::max(1e-9, report.mean_total_ms), 2) << "x)";
+  }
+  out << "\nin thread CPU time: " << fixed(report.mean_cpu_ms, 3)
+      << " ms; slowest sequence: " << fixed(report.slowest_cpu_ms, 3) << " ms";
+  if (report.baseline_mean_cpu_ms > 0.0) {
+    out << "; straightforward: " << fixed(report.baseline_mean_cpu_ms, 3) << " ms ("
+        << fixed(report.baseline_mean_cpu_ms / std::max(1e-9, report.mean_cpu_ms), 2) << "x)";
   }
   out << '\n';
   return out.str();

@@ -40,7 +40,8 @@ struct BenchConfigResult {
   std::string config;  // "optimised" or "straightforward"
   TimeStats line;      // colour conversion + line detection
   TimeStats grouping;  // filter + graph + BDSP + choice
-  TimeStats total;     // the whole Tracker::track call
+  TimeStats total;     // the whole Tracker::track call (wall clock)
+  TimeStats cpu;       // the same call in CPU time of the thread: robust to a shared machine
   double fps = 0.0;    // tracked frames per second of tracking time
   int held = 0;
   double success_10px = 0.0;  // share of frames (the initial one included) with E_AL < 10
@@ -60,6 +61,9 @@ struct BenchReport {
   double mean_total_ms = 0.0;     // optimised: mean over sequences of the per-frame mean
   double slowest_total_ms = 0.0;  // optimised: the largest per-sequence mean
   double baseline_mean_total_ms = 0.0;
+  double mean_cpu_ms = 0.0;  // the same three in thread CPU time
+  double slowest_cpu_ms = 0.0;
+  double baseline_mean_cpu_ms = 0.0;
 };
 
 // Runs the benchmark. Decoding is done once per frame and excluded from the times; each frame
