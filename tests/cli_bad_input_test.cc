@@ -307,6 +307,30 @@ TEST_F(CliRunTest, FailedRunKeepsTheExistingOutput) {
   EXPECT_FALSE(fs::exists(dir_ / "out.csv"));
 }
 
+// Hard frames are tracked through (exit 0) and say so in the CSV's note column.
+TEST_F(CliRunTest, HardFramesAreNotedInTheCsv) {
+  const cv::Mat& like = sequence().frames[0];
+  // Frame 3: nothing at all; frame 5: a dense grid of 12 px strokes over the whole frame.
+  cv::imwrite((dir_ / "seq" / frame_name(3)).string(), cv::Mat(like.size(), like.type(), 128));
+  cv::Mat dense = like.clone();
+  for (int y = 4; y < dense.rows - 14; y += 12) {
+    for (int x = 4; x < dense.cols - 14; x += 12) {
+      const bool across = ((x + y) / 12) % 2 == 0;
+      cv::line(dense, {x, y}, {x + (across ? 12 : 0), y + (across ? 0 : 12)}, cv::Scalar(0, 0, 0),
+               2);
+    }
+  }
+  cv::imwrite((dir_ / "seq" / frame_name(5)).string(), dense);
+  const RunResult r = run_scbt(dir_, kTrack + "--csv out.csv --max-segments 20");
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  const std::vector<std::string> rows = read_text_lines((dir_ / "out.csv").string());
+  ASSERT_EQ(rows.size(), sequence().frames.size());  // header + frames 2..n
+  EXPECT_NE(rows[0].find(",note"), std::string::npos);
+  EXPECT_EQ(rows[2].rfind("3,1,", 0), 0u) << rows[2];
+  EXPECT_NE(rows[2].find("held: no segments"), std::string::npos) << rows[2];
+  EXPECT_NE(rows[4].find("segments capped: "), std::string::npos) << rows[4];
+}
+
 // SIGTERM / SIGINT mid-run: the frames tracked so far form a complete results file, the run says
 // how far it got, and the exit code is 128 + the signal.
 void expect_interrupted_cleanly(const fs::path& dir, int signal_number) {
