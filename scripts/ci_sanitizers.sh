@@ -11,6 +11,7 @@ cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=Debug -DCMAKE_CXX_FLAGS_DEBUG="$flags"
 cmake --build "$build" -j2
 export ASAN_OPTIONS=detect_leaks=1:halt_on_error=1
 export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
+export LSAN_OPTIONS="suppressions=$PWD/scripts/lsan_suppressions.txt"
 SCBT_SOAK_FRAMES=3000 ctest --test-dir "$build" --output-on-failure -j2 \
   -E "${SCBT_ASAN_EXCLUDE:-DatasetRegression}"
 
