@@ -8,6 +8,7 @@
 #include <unistd.h>
 
 #include <chrono>
+#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -246,6 +247,9 @@ TEST_P(CliBadInputTest, MessageExitCodeAndOutput) {
   write_sequence(dir);
   c.setup(dir);
   const RunResult r = run_scbt(dir, c.args);
+  // For the record (ctest --verbose): what each bad input got.
+  std::printf("[case] %s -> exit %d: %s\n", c.name.c_str(), r.exit_code,
+              r.err.empty() ? "(no message)\n" : r.err.c_str());
   EXPECT_EQ(r.exit_code, c.exit_code) << r.err;
   if (!c.message.empty()) {
     EXPECT_NE(r.err.find(c.message), std::string::npos) << r.err;

@@ -6,6 +6,7 @@
 #include <fstream>
 #include <iterator>
 #include <opencv2/core.hpp>
+#include <opencv2/core/utils/logger.hpp>
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/videoio.hpp>
 #include <stdexcept>
@@ -200,7 +201,12 @@ std::unique_ptr<FrameSource> open_frame_source(const std::string& input) {
   if (!fs::is_regular_file(status)) {
     throw std::runtime_error(input + ": neither a video file, an image folder nor a camera index");
   }
+  // The backends that fail to open a file log multi-line warnings of their own; the one-line
+  // error below says it all.
+  const cv::utils::logging::LogLevel level =
+      cv::utils::logging::setLogLevel(cv::utils::logging::LOG_LEVEL_SILENT);
   cv::VideoCapture video(input);
+  cv::utils::logging::setLogLevel(level);
   if (!video.isOpened()) throw std::runtime_error(input + ": cannot open as a video");
   return std::make_unique<VideoSource>(std::move(video), fs::path(input).filename().string(),
                                        false);
