@@ -10,7 +10,7 @@ cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=Debug -DCMAKE_CXX_FLAGS_DEBUG="$flags"
 cmake --build "$build" -j2
 export ASAN_OPTIONS=detect_leaks=1:halt_on_error=1
 export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
-export LSAN_OPTIONS="suppressions=$PWD/scripts/lsan_suppressions.txt"
+export LSAN_OPTIONS="suppressions=$PWD/scripts/lsan_suppressions.txt:print_suppressions=0"
 # The dataset regression is the Release build's job (and scbt track covers the dataset below);
 # the RSS soak is too, since ASan's quarantine grows resident memory on purpose (LSan checks
 # leaks here instead).

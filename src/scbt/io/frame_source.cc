@@ -205,7 +205,9 @@ std::unique_ptr<FrameSource> open_frame_source(const std::string& input) {
   // error below says it all.
   const cv::utils::logging::LogLevel level =
       cv::utils::logging::setLogLevel(cv::utils::logging::LOG_LEVEL_SILENT);
-  cv::VideoCapture video(input);
+  // File backends only: CAP_ANY would also try the camera ones (gphoto2 scans USB and leaks).
+  cv::VideoCapture video(input, cv::CAP_FFMPEG);
+  if (!video.isOpened()) video.open(input, cv::CAP_GSTREAMER);
   cv::utils::logging::setLogLevel(level);
   if (!video.isOpened()) throw std::runtime_error(input + ": cannot open as a video");
   return std::make_unique<VideoSource>(std::move(video), fs::path(input).filename().string(),

@@ -118,7 +118,9 @@ TEST_F(FrameSourceTest, NonexistentPathNamesIt) {
 
 TEST_F(FrameSourceTest, CorruptImageNamesTheFile) {
   write_image("1.png", 50);
-  write_text("2.jpg", std::string("\xff\xd8 this is not really a jpeg \x01\x02\x03", 34));
+  // JPEG magic, then junk (the length is the literal's, no terminating NUL).
+  static const char kFakeJpeg[] = "\xff\xd8 this is not really a jpeg \x01\x02\x03";
+  write_text("2.jpg", std::string(kFakeJpeg, sizeof(kFakeJpeg) - 1));
   write_image("3.png", 60);
   const std::unique_ptr<FrameSource> source = open_frame_source(folder());
   cv::Mat frame;
