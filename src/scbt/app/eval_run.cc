@@ -554,12 +554,13 @@ EvalRunSummary run_eval(const EvalRunOptions& options, std::ostream& log) {
   for (const Sequence& s : sequences) sequence_names.push_back(s.files.name);
   if (!trackers.empty()) {
     const TrackerOptions& t = options.tracker;
-    char line[256];
+    char line[384];
     std::snprintf(line, sizeof(line),
                   "bdsp options: detector %s, filter distance %g px, min area similarity %g, "
-                  "seed stride %d",
+                  "cost tolerance %g, recover by motion %s, detection window %s, seed stride %d",
                   to_string(t.detector.kind).c_str(), t.filter_distance, t.min_area_similarity,
-                  t.bdsp.seed_stride);
+                  t.cost_tolerance, t.recover_by_motion ? "on" : "off",
+                  t.detector.crop_to_boundary ? "on" : "off", t.bdsp.seed_stride);
     info.notes.push_back("Trackers run: " + join(trackers) +
                          " (initialised from ground-truth "
                          "line 1; results in <tracker>/<Seq>.txt)");
