@@ -150,7 +150,8 @@ TrackResult Tracker::track(const cv::Mat& frame) {
     result.area_similarity = a.choice->similarity;
     if (options_.recover_by_motion) {
       reference_roi_ = a.roi;
-      reference_gray_ = gray_.clone();
+      // A deep copy (grey input is a view of the caller's frame) into the reused buffer.
+      gray_.copyTo(reference_gray_);
     }
   } else {
     result.held = true;
