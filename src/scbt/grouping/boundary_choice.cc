@@ -1,6 +1,7 @@
 #include "scbt/grouping/boundary_choice.h"
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 
 namespace scbt {
@@ -63,39 +64,35 @@ std::optional<BoundaryChoice> choose_boundary_stable(const std::vector<CycleCand
                                                      const SegmentGraph& graph,
                                                      const Polygon& previous, double min_similarity,
                                                      double tolerance) {
-  const double previous_area = area(previous);
-  std::optional<BoundaryChoice> best = choose_boundary(candidates, previous_area, min_similarity);
-  if (!best || tolerance <= 0.0) return best;
-  const double bound = best->cost * (1.0 + tolerance);
+  StableChooser chooser;
+  return chooser.choose(
+      candidates, [&](int index, std::vector<int>* cycle) { *cycle = candidates[index].vertices; },
+      graph, previous, min_similarity, tolerance);
+}
 
-  // Different seeds often close the same cycle; identical cycles have bit-identical gap and
-  // area, so measuring each (gap, area) pair once avoids most distance computations.
-  std::vector<int> near_ties;
-  for (int i = 0; i < static_cast<int>(candidates.size()); ++i) {
-    const CycleCandidate& c = candidates[i];
-    if (!(area_similarity(previous_area, c.area) > min_similarity)) continue;
-    if (grouping_cost(c.gap_length, c.area) <= bound) near_ties.push_back(i);
-  }
-  std::sort(near_ties.begin(), near_ties.end(), [&](int l, int r) {
-    const CycleCandidate &a = candidates[l], &b = candidates[r];
-    return a.area < b.area || (a.area == b.area && a.gap_length < b.gap_length);
+int StableChooser::closest_near_tie() {
+  // The boundary distance is the larger of two means, so the cheap one (cycle -> previous,
+  // cached per vertex and edge) bounds it from below: candidates are visited by that bound and
+  // the expensive direction is computed only while the bound can still win.
+  std::sort(near_ties_.begin(), near_ties_.end(), [](const NearTie& l, const NearTie& r) {
+    return l.from_distance < r.from_distance ||
+           (l.from_distance == r.from_distance && l.rank < r.rank);
   });
   double best_distance = std::numeric_limits<double>::infinity();
-  for (size_t k = 0; k < near_ties.size(); ++k) {
-    const CycleCandidate& c = candidates[near_ties[k]];
-    if (k > 0) {
-      const CycleCandidate& before = candidates[near_ties[k - 1]];
-      if (before.area == c.area && before.gap_length == c.gap_length) continue;
-    }
-    const double distance = boundary_distance(candidate_polygon(graph, c), previous);
-    if (distance < best_distance) {
+  int best_rank = std::numeric_limits<int>::max(), best_index = -1;
+  for (const NearTie& tie : near_ties_) {
+    if (tie.from_distance > best_distance) break;
+    cycle_.assign(cycles_.begin() + tie.begin, cycles_.begin() + tie.end);
+    const double distance = std::max(tie.from_distance, cache_.mean_distance_to_cycle(cycle_));
+    // Equal distances go to the earlier in (area, gap) order, as a scan in that order would.
+    if (distance < best_distance ||
+        (distance == best_distance && std::isfinite(distance) && tie.rank < best_rank)) {
       best_distance = distance;
-      best->index = near_ties[k];
-      best->cost = grouping_cost(c.gap_length, c.area);
-      best->similarity = area_similarity(previous_area, c.area);
+      best_rank = tie.rank;
+      best_index = tie.index;
     }
   }
-  return best;
+  return best_index;
 }
 
 }  // namespace scbt

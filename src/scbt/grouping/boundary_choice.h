@@ -2,10 +2,13 @@
 // those whose area is similar enough to the previous boundary's.
 #pragma once
 
+#include <algorithm>
+#include <limits>
 #include <optional>
 #include <vector>
 
 #include "scbt/grouping/bdsp.h"
+#include "scbt/grouping/boundary_distance_cache.h"
 
 namespace scbt {
 
@@ -41,5 +44,94 @@ std::optional<BoundaryChoice> choose_boundary_stable(const std::vector<CycleCand
                                                      const SegmentGraph& graph,
                                                      const Polygon& previous, double min_similarity,
                                                      double tolerance);
+
+// The stabilised choice with its buffers and distance cache kept across frames, over any list
+// of candidates that carry `gap_length` and `area`, whose cycles (graph vertex ids) are listed on
+// demand by `list_vertices(index, std::vector<int>* out)`: only near-tied candidates are ever
+// listed. Chooses exactly as choose_boundary_stable does (distances equal up to rounding).
+class StableChooser {
+ public:
+  template <class Candidate, class ListVertices>
+  std::optional<BoundaryChoice> choose(const std::vector<Candidate>& candidates,
+                                       ListVertices&& list_vertices, const SegmentGraph& graph,
+                                       const Polygon& previous, double min_similarity,
+                                       double tolerance);
+
+ private:
+  struct NearTie {
+    int index;             // into the candidates
+    int rank;              // position in (area, gap) order: the tie-break between equal distances
+    double from_distance;  // cycle -> previous, a lower bound of the boundary distance
+    int begin, end;        // its cycle in `cycles_`
+  };
+  // Picks among near_ties_ (filled, cycles listed, from_distance set); returns the candidate
+  // index, -1 if no distance is finite.
+  int closest_near_tie();
+
+  std::vector<int> order_;
+  std::vector<NearTie> near_ties_;
+  std::vector<int> cycles_;
+  std::vector<int> cycle_;
+  BoundaryDistanceCache cache_;
+};
+
+template <class Candidate, class ListVertices>
+std::optional<BoundaryChoice> StableChooser::choose(const std::vector<Candidate>& candidates,
+                                                    ListVertices&& list_vertices,
+                                                    const SegmentGraph& graph,
+                                                    const Polygon& previous, double min_similarity,
+                                                    double tolerance) {
+  const double previous_area = area(previous);
+  BoundaryChoice best;
+  for (int i = 0; i < static_cast<int>(candidates.size()); ++i) {
+    const double similarity = area_similarity(previous_area, candidates[i].area);
+    if (!(similarity > min_similarity)) continue;
+    ++best.num_admissible;
+    const double cost = grouping_cost(candidates[i].gap_length, candidates[i].area);
+    if (best.index < 0 || cost < best.cost || (cost == best.cost && similarity > best.similarity)) {
+      best.index = i;
+      best.cost = cost;
+      best.similarity = similarity;
+    }
+  }
+  if (best.index < 0) return std::nullopt;
+  if (tolerance <= 0.0) return best;
+  const double bound = best.cost * (1.0 + tolerance);
+
+  order_.clear();
+  for (int i = 0; i < static_cast<int>(candidates.size()); ++i) {
+    const Candidate& c = candidates[i];
+    if (!(area_similarity(previous_area, c.area) > min_similarity)) continue;
+    if (grouping_cost(c.gap_length, c.area) <= bound) order_.push_back(i);
+  }
+  // Different seeds often close the same cycle; identical cycles have bit-identical gap and
+  // area, so each (area, gap) pair is measured once.
+  std::sort(order_.begin(), order_.end(), [&](int l, int r) {
+    const Candidate &a = candidates[l], &b = candidates[r];
+    return a.area < b.area || (a.area == b.area && a.gap_length < b.gap_length);
+  });
+  near_ties_.clear();
+  cycles_.clear();
+  cache_.reset(graph, previous);
+  for (size_t k = 0; k < order_.size(); ++k) {
+    const Candidate& c = candidates[order_[k]];
+    if (k > 0) {
+      const Candidate& before = candidates[order_[k - 1]];
+      if (before.area == c.area && before.gap_length == c.gap_length) continue;
+    }
+    list_vertices(order_[k], &cycle_);
+    NearTie tie{order_[k], static_cast<int>(k), cache_.mean_distance_from_cycle(cycle_),
+                static_cast<int>(cycles_.size()), 0};
+    cycles_.insert(cycles_.end(), cycle_.begin(), cycle_.end());
+    tie.end = static_cast<int>(cycles_.size());
+    near_ties_.push_back(tie);
+  }
+  const int closest = closest_near_tie();
+  if (closest >= 0) best.index = closest;
+  const Candidate& chosen = candidates[best.index];
+  best.cost = grouping_cost(chosen.gap_length, chosen.area);
+  best.similarity = area_similarity(previous_area, chosen.area);
+  return best;
+}
 
 }  // namespace scbt

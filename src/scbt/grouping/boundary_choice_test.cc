@@ -7,6 +7,8 @@
 #include <limits>
 #include <random>
 
+#include "scbt/grouping/segment_graph.h"
+
 namespace scbt {
 namespace {
 
@@ -222,6 +224,134 @@ TEST(BoundaryDistance, LargeShapesMatchTheirContinuousLimit) {
     // Concentric circles d apart: the distance is d.
     EXPECT_NEAR(boundary_distance(circle, regular(256, Point(0, 0), 300.0 + d)), d, 0.01 * d);
   }
+}
+
+// The stabilised choice written out plainly: every distinct near-tie measured with
+// boundary_distance in (area, gap) order, the first closest one wins.
+std::optional<BoundaryChoice> reference_stable_choice(const std::vector<CycleCandidate>& candidates,
+                                                      const SegmentGraph& graph,
+                                                      const Polygon& previous,
+                                                      double min_similarity, double tolerance) {
+  const double previous_area = area(previous);
+  std::optional<BoundaryChoice> best = choose_boundary(candidates, previous_area, min_similarity);
+  if (!best || tolerance <= 0.0) return best;
+  const double bound = best->cost * (1.0 + tolerance);
+  std::vector<int> ties;
+  for (int i = 0; i < static_cast<int>(candidates.size()); ++i) {
+    const CycleCandidate& c = candidates[i];
+    if (area_similarity(previous_area, c.area) > min_similarity &&
+        grouping_cost(c.gap_length, c.area) <= bound) {
+      ties.push_back(i);
+    }
+  }
+  std::stable_sort(ties.begin(), ties.end(), [&](int l, int r) {
+    return candidates[l].area < candidates[r].area ||
+           (candidates[l].area == candidates[r].area &&
+            candidates[l].gap_length < candidates[r].gap_length);
+  });
+  double best_distance = std::numeric_limits<double>::infinity();
+  for (int i : ties) {
+    const double d = boundary_distance(candidate_polygon(graph, candidates[i]), previous);
+    if (d < best_distance) {
+      best_distance = d;
+      best->index = i;
+    }
+  }
+  best->cost = grouping_cost(candidates[best->index].gap_length, candidates[best->index].area);
+  best->similarity = area_similarity(previous_area, candidates[best->index].area);
+  return best;
+}
+
+// Random segments scattered near a jittered polygon, so that BDSP finds many near-tied cycles.
+std::vector<Segment> segments_near(const Polygon& outline, std::mt19937& rng) {
+  std::uniform_real_distribution<double> unit(0.0, 1.0), jitter(-4.0, 4.0), angle(-kPi, kPi);
+  std::vector<Segment> segments;
+  const int n = static_cast<int>(outline.size());
+  for (int i = 0; i < n; ++i) {
+    const Point a = outline[i], b = outline[(i + 1) % n];
+    for (double t = 0.0; t < 0.9; t += 0.3) {
+      const double t0 = t + 0.05 * unit(rng), t1 = t + 0.2 + 0.05 * unit(rng);
+      segments.push_back({a + (b - a) * t0 + Point(jitter(rng), jitter(rng)),
+                          a + (b - a) * t1 + Point(jitter(rng), jitter(rng))});
+    }
+    const Point p = a + Point(jitter(rng), jitter(rng)) * 3.0;
+    const double t = angle(rng);
+    segments.push_back({p, p + Point(std::cos(t), std::sin(t)) * (5.0 + 15.0 * unit(rng))});
+  }
+  return segments;
+}
+
+class StableChooserProperty : public ::testing::TestWithParam<unsigned> {};
+
+// On BDSP's candidates of random graphs, the cached, pruned chooser picks the cycle the plain
+// scan picks, and one chooser reused across frames does so every time.
+TEST_P(StableChooserProperty, PicksWhatThePlainScanPicks) {
+  std::mt19937 rng(GetParam() * 31u + 7u);
+  std::uniform_real_distribution<double> pos(150.0, 250.0), radius(40.0, 90.0), phase(0.0, kPi),
+      tolerance(0.0, 0.5), shift(-8.0, 8.0);
+  std::uniform_int_distribution<int> sides(3, 9);
+  StableChooser chooser;
+  for (int frame = 0; frame < 3; ++frame) {
+    const Polygon outline = regular(sides(rng), Point(pos(rng), pos(rng)), radius(rng), phase(rng));
+    const SegmentGraph graph = build_segment_graph(segments_near(outline, rng));
+    const std::vector<CycleCandidate> candidates = search_cycle_candidates(graph);
+    Polygon previous = regular(sides(rng), centroid(outline), radius(rng), phase(rng));
+    for (Point& p : previous) p += Point(shift(rng), shift(rng));
+    const double tol = tolerance(rng);
+    const auto expected = reference_stable_choice(candidates, graph, previous, 0.5, tol);
+    const auto got = chooser.choose(
+        candidates, [&](int i, std::vector<int>* out) { *out = candidates[i].vertices; }, graph,
+        previous, 0.5, tol);
+    ASSERT_EQ(expected.has_value(), got.has_value());
+    if (!expected) continue;
+    // The same cycle, or one as close to the previous boundary up to rounding (a cycle reached
+    // along different paths can carry a gap summed in another order).
+    const CycleCandidate &e = candidates[expected->index], &g = candidates[got->index];
+    EXPECT_NEAR(boundary_distance(candidate_polygon(graph, e), previous),
+                boundary_distance(candidate_polygon(graph, g), previous), 1e-9);
+    EXPECT_NEAR(e.area, g.area, 1e-9 * e.area);
+    EXPECT_NEAR(e.gap_length, g.gap_length, 1e-9 * (1.0 + e.gap_length));
+    EXPECT_NEAR(expected->cost, got->cost, 1e-9 * expected->cost);
+    EXPECT_EQ(expected->num_admissible, got->num_admissible);
+    EXPECT_EQ(choose_boundary_stable(candidates, graph, previous, 0.5, tol)->index, got->index);
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(Seeds, StableChooserProperty, ::testing::Range(0u, 60u));
+
+TEST(BoundaryDistanceCache, MatchesBoundaryDistanceOnGraphCyclesAndArbitraryOnes) {
+  std::mt19937 rng(123);
+  std::uniform_real_distribution<double> pos(150.0, 250.0), radius(40.0, 90.0), phase(0.0, kPi);
+  std::uniform_int_distribution<int> sides(3, 9);
+  BoundaryDistanceCache cache;
+  int measured = 0;
+  for (int round = 0; round < 40; ++round) {
+    const Polygon outline = regular(sides(rng), Point(pos(rng), pos(rng)), radius(rng), phase(rng));
+    const SegmentGraph graph = build_segment_graph(segments_near(outline, rng));
+    const std::vector<CycleCandidate> candidates = search_cycle_candidates(graph);
+    const Polygon previous = regular(sides(rng), Point(pos(rng), pos(rng)), radius(rng));
+    cache.reset(graph, previous);
+    for (size_t k = 0; k < candidates.size(); k += 7) {
+      const Polygon polygon = candidate_polygon(graph, candidates[k]);
+      // Twice: the second answer comes from the cache.
+      for (int pass = 0; pass < 2; ++pass) {
+        EXPECT_NEAR(cache.boundary_distance(candidates[k].vertices),
+                    boundary_distance(polygon, previous), 1e-9);
+      }
+      ++measured;
+    }
+    // A cycle through vertices that are not joined by graph edges is measured directly, and
+    // walking a cycle backwards changes nothing.
+    std::uniform_int_distribution<int> vertex(0, graph.num_vertices() - 1);
+    std::vector<int> arbitrary = {vertex(rng), vertex(rng), vertex(rng), vertex(rng)};
+    Polygon arbitrary_polygon;
+    for (int v : arbitrary) arbitrary_polygon.push_back(graph.vertices[v]);
+    EXPECT_NEAR(cache.boundary_distance(arbitrary), boundary_distance(arbitrary_polygon, previous),
+                1e-9);
+    std::vector<int> backwards(arbitrary.rbegin(), arbitrary.rend());
+    EXPECT_NEAR(cache.boundary_distance(backwards), cache.boundary_distance(arbitrary), 1e-9);
+  }
+  EXPECT_GT(measured, 100);
 }
 
 }  // namespace

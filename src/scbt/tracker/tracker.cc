@@ -100,8 +100,10 @@ Tracker::Attempt Tracker::attempt(const cv::Mat& frame, const Polygon& prior) {
   }
   a.graph = build_segment_graph(a.kept);
   a.candidates = search_cycle_candidates(a.graph, options_.bdsp);
-  a.choice = choose_boundary_stable(a.candidates, a.graph, prior, options_.min_area_similarity,
-                                    options_.cost_tolerance);
+  a.choice = chooser_.choose(
+      a.candidates,
+      [&](int index, std::vector<int>* cycle) { *cycle = a.candidates[index].vertices; }, a.graph,
+      prior, options_.min_area_similarity, options_.cost_tolerance);
   a.grouping_ms = elapsed_ms(grouping_start);
   return a;
 }

@@ -83,6 +83,7 @@ class Tracker {
     double grouping_ms = 0.0;
   };
   Attempt attempt(const cv::Mat& frame, const Polygon& prior);
+  StableChooser chooser_;  // its buffers and distance cache are reused frame to frame
   bool keep_debug_ = false;
   TrackDebug debug_;
 };

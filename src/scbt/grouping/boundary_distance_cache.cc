@@ -1,0 +1,134 @@
+#include "scbt/grouping/boundary_distance_cache.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace scbt {
+namespace {
+
+constexpr double kNotComputed = std::numeric_limits<double>::quiet_NaN();
+
+// Squared distance from p to segment [a, b]; the same arithmetic as distance_to_segment, whose
+// square root it is (the root is taken once per minimum instead of once per segment).
+double distance_sq_to_segment(const Point& p, const Point& a, const Point& b) {
+  const Point ab = b - a;
+  const double length_sq = ab.dot(ab);
+  double t = length_sq > 0.0 ? (p - a).dot(ab) / length_sq : 0.0;
+  t = std::clamp(t, 0.0, 1.0);
+  const Point d = p - (a + t * ab);
+  return d.x * d.x + d.y * d.y;
+}
+
+}  // namespace
+
+void BoundaryDistanceCache::reset(const SegmentGraph& graph, const Polygon& previous) {
+  graph_ = &graph;
+  previous_ = &previous;
+  vertex_distance_.assign(graph.vertices.size(), kNotComputed);
+  midpoint_distance_.assign(graph.edges.size(), kNotComputed);
+  row_offset_.assign(graph.edges.size(), -1);
+  rows_.clear();
+
+  // Samples in the order boundary_distance visits them: edge (j, i) for i = 0.. with j = i - 1
+  // cyclically contributes its start j, its midpoint and its end i.
+  const size_t n = previous.size();
+  samples_.resize(2 * n);
+  previous_edge_length_.resize(n);
+  previous_length_ = 0.0;
+  for (size_t i = 0, j = n - 1; i < n; j = i++) {
+    samples_[2 * i] = previous[i];
+    samples_[2 * i + 1] = (previous[j] + previous[i]) * 0.5;  // midpoint of the edge into i
+    previous_edge_length_[i] = cv::norm(previous[i] - previous[j]);
+    previous_length_ += previous_edge_length_[i];
+  }
+}
+
+int BoundaryDistanceCache::edge_between(int u, int v) const {
+  const SegmentGraph& g = *graph_;
+  if (static_cast<size_t>(u) + 1 >= g.adjacency_begin.size()) return -1;
+  for (int k = g.adjacency_begin[u]; k < g.adjacency_begin[u + 1]; ++k) {
+    if (g.adjacency[k].vertex == v) return g.adjacency[k].edge;
+  }
+  return -1;
+}
+
+double BoundaryDistanceCache::vertex_distance(int v) {
+  double& d = vertex_distance_[v];
+  if (std::isnan(d)) d = distance_to_boundary(graph_->vertices[v], *previous_);
+  return d;
+}
+
+double BoundaryDistanceCache::midpoint_distance(int edge, const Point& a, const Point& b) {
+  if (edge < 0) return distance_to_boundary((a + b) * 0.5, *previous_);
+  double& d = midpoint_distance_[edge];
+  if (std::isnan(d)) d = distance_to_boundary((a + b) * 0.5, *previous_);
+  return d;
+}
+
+double BoundaryDistanceCache::mean_distance_from_cycle(const std::vector<int>& cycle) {
+  const std::vector<Point>& points = graph_->vertices;
+  const size_t n = cycle.size();
+  double weighted = 0.0, total_length = 0.0;
+  for (size_t i = 0, j = n - 1; i < n; j = i++) {
+    const Point& a = points[cycle[j]];
+    const Point& b = points[cycle[i]];
+    const double length = cv::norm(b - a);
+    const double mid = midpoint_distance(edge_between(cycle[j], cycle[i]), a, b);
+    weighted += length * (vertex_distance(cycle[j]) + 4.0 * mid + vertex_distance(cycle[i])) / 6.0;
+    total_length += length;
+  }
+  return total_length > 0.0 ? weighted / total_length : 0.0;
+}
+
+const double* BoundaryDistanceCache::sample_distances_sq(int edge, const Point& a, const Point& b) {
+  const size_t m = samples_.size();
+  double* row;
+  if (edge >= 0 && row_offset_[edge] >= 0) return rows_.data() + row_offset_[edge];
+  if (edge >= 0) {
+    row_offset_[edge] = static_cast<int>(rows_.size());
+    rows_.resize(rows_.size() + m);
+    row = rows_.data() + row_offset_[edge];
+  } else {
+    scratch_row_.resize(m);
+    row = scratch_row_.data();
+  }
+  for (size_t s = 0; s < m; ++s) row[s] = distance_sq_to_segment(samples_[s], a, b);
+  return row;
+}
+
+double BoundaryDistanceCache::mean_distance_to_cycle(const std::vector<int>& cycle) {
+  const size_t m = samples_.size();
+  const size_t n = cycle.size();
+  if (m == 0 || !(previous_length_ > 0.0)) return 0.0;
+  nearest_sq_.assign(m, std::numeric_limits<double>::infinity());
+  const std::vector<Point>& points = graph_->vertices;
+  if (n == 1) {
+    for (size_t s = 0; s < m; ++s) {
+      const Point d = samples_[s] - points[cycle[0]];
+      nearest_sq_[s] = d.x * d.x + d.y * d.y;
+    }
+  }
+  for (size_t i = 0, j = n - 1; n > 1 && i < n; j = i++) {
+    const int edge = edge_between(cycle[j], cycle[i]);
+    // Rows are cached in the graph's orientation of the edge, so the same edge walked either
+    // way gives the same values.
+    const bool forward = edge < 0 || graph_->edges[edge].u == cycle[j];
+    const Point& a = points[forward ? cycle[j] : cycle[i]];
+    const Point& b = points[forward ? cycle[i] : cycle[j]];
+    const double* row = sample_distances_sq(edge, a, b);
+    // sample_distances_sq may grow rows_; `row` stays valid until the next call.
+    for (size_t s = 0; s < m; ++s) nearest_sq_[s] = std::min(nearest_sq_[s], row[s]);
+  }
+  const size_t count = m / 2;
+  double weighted = 0.0;
+  for (size_t i = 0, j = count - 1; i < count; j = i++) {
+    weighted += previous_edge_length_[i] *
+                (std::sqrt(nearest_sq_[2 * j]) + 4.0 * std::sqrt(nearest_sq_[2 * i + 1]) +
+                 std::sqrt(nearest_sq_[2 * i])) /
+                6.0;
+  }
+  return weighted / previous_length_;
+}
+
+}  // namespace scbt

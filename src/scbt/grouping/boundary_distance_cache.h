@@ -1,0 +1,64 @@
+// Boundary distances between one fixed previous boundary and many cycles of one SegmentGraph,
+// the inner loop of the stabilised choice (boundary_choice.h).
+#pragma once
+
+#include <vector>
+
+#include "scbt/geometry/polygon.h"
+#include "scbt/grouping/segment_graph.h"
+
+namespace scbt {
+
+// Near-tied candidates of one frame share most of their vertices and edges, so the distances
+// that make up boundary_distance(cycle, previous) are cached per graph vertex and edge and
+// computed at most once per frame:
+//  - cycle -> previous: per vertex and per edge midpoint, its distance to the previous boundary;
+//  - previous -> cycle: per edge, the squared distances from the previous boundary's sample
+//    points (vertices and edge midpoints) to it; a cycle's distance from a sample is the least
+//    over its edges.
+// Buffers are reused across frames. Values equal boundary_distance on the cycle's polygon up to
+// rounding (an edge's distances are computed in the graph's orientation of the edge).
+class BoundaryDistanceCache {
+ public:
+  // Starts a frame: forgets everything cached for the previous graph or boundary.
+  void reset(const SegmentGraph& graph, const Polygon& previous);
+
+  // Length-weighted mean distance from the cycle (graph vertex ids, closing back to front) to
+  // the previous boundary: the cheap direction, O(cycle length) once cached.
+  double mean_distance_from_cycle(const std::vector<int>& cycle);
+  // Length-weighted mean distance from the previous boundary to the cycle.
+  double mean_distance_to_cycle(const std::vector<int>& cycle);
+  // boundary_distance(candidate polygon, previous): the larger of the two.
+  double boundary_distance(const std::vector<int>& cycle) {
+    const double from = mean_distance_from_cycle(cycle);
+    const double to = mean_distance_to_cycle(cycle);
+    return from > to ? from : to;
+  }
+
+ private:
+  // The edge joining u and v, or -1 (cycles handed in need not use graph edges).
+  int edge_between(int u, int v) const;
+  double vertex_distance(int v);
+  double midpoint_distance(int edge, const Point& a, const Point& b);
+  // Squared distances from every sample of the previous boundary to segment [a, b], cached
+  // under `edge` when it is >= 0.
+  const double* sample_distances_sq(int edge, const Point& a, const Point& b);
+
+  const SegmentGraph* graph_ = nullptr;
+  const Polygon* previous_ = nullptr;
+  // NaN: not computed yet.
+  std::vector<double> vertex_distance_;
+  std::vector<double> midpoint_distance_;
+  // Samples of the previous boundary: its vertex i is sample 2i, the midpoint of its edge
+  // (i, i+1) is sample 2i+1.
+  std::vector<Point> samples_;
+  std::vector<double> previous_edge_length_;
+  double previous_length_ = 0.0;
+  // Per edge, the offset of its row of samples_.size() squared distances in `rows_`; -1 if none.
+  std::vector<int> row_offset_;
+  std::vector<double> rows_;
+  std::vector<double> scratch_row_;
+  std::vector<double> nearest_sq_;
+};
+
+}  // namespace scbt
