@@ -28,23 +28,30 @@ double perimeter(const Polygon& polygon) {
   return total;
 }
 
-double distance_to_segment(const Point& p, const Point& a, const Point& b) {
+double distance_sq_to_segment(const Point& p, const Point& a, const Point& b) {
   const Point ab = b - a;
   const double length_sq = ab.dot(ab);
   double t = length_sq > 0.0 ? (p - a).dot(ab) / length_sq : 0.0;
   t = std::clamp(t, 0.0, 1.0);
-  return cv::norm(p - (a + t * ab));
+  const Point d = p - (a + t * ab);
+  return d.x * d.x + d.y * d.y;
+}
+
+double distance_to_segment(const Point& p, const Point& a, const Point& b) {
+  return std::sqrt(distance_sq_to_segment(p, a, b));
 }
 
 double distance_to_boundary(const Point& p, const Polygon& polygon) {
   const size_t n = polygon.size();
   if (n == 0) return std::numeric_limits<double>::infinity();
   if (n == 1) return cv::norm(p - polygon[0]);
+  // One square root for the least squared distance (the root is monotonic, so this is exactly
+  // the least of the distances).
   double best = std::numeric_limits<double>::infinity();
   for (size_t i = 0, j = n - 1; i < n; j = i++) {
-    best = std::min(best, distance_to_segment(p, polygon[j], polygon[i]));
+    best = std::min(best, distance_sq_to_segment(p, polygon[j], polygon[i]));
   }
-  return best;
+  return std::sqrt(best);
 }
 
 namespace {

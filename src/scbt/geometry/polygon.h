@@ -33,6 +33,8 @@ double perimeter(const Polygon& polygon);
 double distance_to_boundary(const Point& p, const Polygon& polygon);
 
 double distance_to_segment(const Point& p, const Point& a, const Point& b);
+// Its square (no square root), for comparisons and minima.
+double distance_sq_to_segment(const Point& p, const Point& a, const Point& b);
 
 // True when segments [p1,p2] and [q1,q2] cross at a point interior to both
 // (touching at endpoints or collinear overlap does not count).

@@ -9,17 +9,6 @@ namespace {
 
 constexpr double kNotComputed = std::numeric_limits<double>::quiet_NaN();
 
-// Squared distance from p to segment [a, b]; the same arithmetic as distance_to_segment, whose
-// square root it is (the root is taken once per minimum instead of once per segment).
-double distance_sq_to_segment(const Point& p, const Point& a, const Point& b) {
-  const Point ab = b - a;
-  const double length_sq = ab.dot(ab);
-  double t = length_sq > 0.0 ? (p - a).dot(ab) / length_sq : 0.0;
-  t = std::clamp(t, 0.0, 1.0);
-  const Point d = p - (a + t * ab);
-  return d.x * d.x + d.y * d.y;
-}
-
 }  // namespace
 
 void BoundaryDistanceCache::reset(const SegmentGraph& graph, const Polygon& previous) {
