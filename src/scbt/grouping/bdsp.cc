@@ -1,24 +1,19 @@
 #include "scbt/grouping/bdsp.h"
 
 #include <algorithm>
-
-#include "scbt/grouping/shortest_paths.h"
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+#include <string>
 
 namespace scbt {
-namespace {
 
-double cycle_area(const SegmentGraph& graph, const std::vector<int>& cycle) {
-  double twice_area = 0.0;
-  const size_t n = cycle.size();
-  for (size_t i = 0, j = n - 1; i < n; j = i++) {
-    const Point& p = graph.vertices[cycle[j]];
-    const Point& q = graph.vertices[cycle[i]];
-    twice_area += p.x * q.y - q.x * p.y;
+void BdspOptions::check() const {
+  if (seed_stride < 1) {
+    throw std::invalid_argument("bdsp seed_stride must be at least 1, got " +
+                                std::to_string(seed_stride));
   }
-  return 0.5 * std::abs(twice_area);
 }
-
-}  // namespace
 
 Polygon candidate_polygon(const SegmentGraph& graph, const CycleCandidate& candidate) {
   Polygon polygon;
@@ -29,109 +24,329 @@ Polygon candidate_polygon(const SegmentGraph& graph, const CycleCandidate& candi
 
 namespace {
 
-// Per-thread buffers reused across calls, so that a tracker allocates nothing here in steady
-// state but the candidates it returns.
-struct Workspace {
-  ShortestPaths from_first, from_second;
-  std::vector<int> meeting_seen;
-  // Pre-order interval of every vertex in the second search's tree: u is an ancestor-or-self of v
-  // exactly when enter[u] <= enter[v] < leave[u].
-  std::vector<int> enter, leave;
-  std::vector<int> child_begin, children, stack;
-  std::vector<int> path;
+constexpr int kUnreached = -2;
+
+// Heap order of ShortestPaths: (distance, vertex id).
+struct Before {
+  template <typename Entry>
+  bool operator()(const Entry& a, const Entry& b) const {
+    return a.distance < b.distance || (a.distance == b.distance && a.vertex < b.vertex);
+  }
 };
 
-// Numbers the tree of `paths` (rooted at `root`) in pre-order (iterative depth-first search over
-// child lists built from the parent links).
-void number_tree(const ShortestPaths& paths, int root, int n, Workspace* ws) {
-  std::vector<int>& begin = ws->child_begin;
-  std::vector<int>& cursor = ws->path;
-  begin.assign(n + 1, 0);
-  for (int v = 0; v < n; ++v) {
-    if (v != root && paths.reached(v)) ++begin[paths.parent_vertex(v) + 1];
+}  // namespace
+
+void CycleSearch::sift_up(int position) {
+  const HeapEntry entry = heap_[position];
+  while (position > 0) {
+    const int parent = (position - 1) / 4;
+    if (!Before()(entry, heap_[parent])) break;
+    heap_[position] = heap_[parent];
+    heap_position_[heap_[position].vertex] = position;
+    position = parent;
   }
-  for (int v = 0; v < n; ++v) begin[v + 1] += begin[v];
-  ws->children.resize(begin[n]);
-  cursor.assign(begin.begin(), begin.end() - 1);
-  for (int v = 0; v < n; ++v) {
-    if (v != root && paths.reached(v)) ws->children[cursor[paths.parent_vertex(v)]++] = v;
+  heap_[position] = entry;
+  heap_position_[entry.vertex] = position;
+}
+
+void CycleSearch::sift_down(int position) {
+  const int size = static_cast<int>(heap_.size());
+  const HeapEntry entry = heap_[position];
+  for (;;) {
+    const int first = 4 * position + 1;
+    if (first >= size) break;
+    int best = first;
+    const int last = std::min(first + 4, size);
+    for (int c = first + 1; c < last; ++c) {
+      if (Before()(heap_[c], heap_[best])) best = c;
+    }
+    if (!Before()(heap_[best], entry)) break;
+    heap_[position] = heap_[best];
+    heap_position_[heap_[position].vertex] = position;
+    position = best;
   }
-  cursor.assign(begin.begin(), begin.end() - 1);  // next child to visit, per vertex
-  ws->enter.assign(n, -1);
-  ws->leave.assign(n, -1);
-  ws->stack.clear();
-  int clock = 0;
-  ws->enter[root] = clock++;
-  ws->stack.push_back(root);
-  while (!ws->stack.empty()) {
-    const int u = ws->stack.back();
-    if (cursor[u] < begin[u + 1]) {
-      const int c = ws->children[cursor[u]++];
-      ws->enter[c] = clock++;
-      ws->stack.push_back(c);
-    } else {
-      ws->leave[u] = clock;
-      ws->stack.pop_back();
+  heap_[position] = entry;
+  heap_position_[entry.vertex] = position;
+}
+
+// The same relaxations in the same order as ShortestPaths::run, so the same distances (bit for
+// bit) and parents (ties included).
+int CycleSearch::shortest_paths(int tree, int source, int blocked, int* parent) {
+  const int n = num_vertices_;
+  double* distance = distance_[tree].data();
+  int* order = order_[tree].data();
+  std::fill(distance, distance + n, std::numeric_limits<double>::infinity());
+  std::fill(parent, parent + n, kUnreached);
+  heap_.clear();
+
+  const Arc* arcs = arcs_.data();
+  const int* begin = arc_begin_.data();
+  const char* is_third = is_third_.data();
+  int* position = heap_position_.data();
+  distance[source] = 0.0;
+  parent[source] = -1;
+  heap_.push_back({0.0, source});
+  position[source] = 0;
+  int settled = 0, thirds_left = num_thirds_;
+  while (!heap_.empty()) {
+    const HeapEntry top = heap_.front();
+    const int u = top.vertex;
+    position[u] = -1;
+    const HeapEntry last = heap_.back();
+    heap_.pop_back();
+    if (!heap_.empty()) {
+      heap_.front() = last;
+      sift_down(0);
+    }
+    order[settled++] = u;
+    if (is_third[u] && --thirds_left == 0) break;  // the rest is never used
+    const double d = top.distance;
+    for (int k = begin[u]; k < begin[u + 1]; ++k) {
+      const Arc& arc = arcs[k];
+      if (arc.edge == blocked) continue;
+      const double candidate = d + arc.weight;
+      const int w = arc.vertex;
+      if (candidate < distance[w]) {
+        distance[w] = candidate;
+        parent[w] = u;
+        if (position[w] < 0) {
+          heap_.push_back({candidate, w});
+          sift_up(static_cast<int>(heap_.size()) - 1);
+        } else {
+          heap_[position[w]].distance = candidate;
+          sift_up(position[w]);
+        }
+      }
+    }
+  }
+  // Vertices left in the heap keep their tentative parent; no third vertex depends on them.
+  for (const HeapEntry& e : heap_) position[e.vertex] = -1;
+  return settled;
+}
+
+// An edge E = (u, w) of weight c can be left out of every search when, for every seed edge a
+// search blocks, some other path joins u and w at least `margin` shorter than c: then every
+// search reaches w (and u) by a strictly shorter way, so E never sets a final distance or parent
+// and leaving it out changes no result (the removed edges' own replacements only use strictly
+// lighter edges, so removing several is safe too). The margin is far above the rounding error
+// of any path sum. Checked here on two-edge detours u - x - w only: a detour that uses no seed
+// edge, or two whose seed edges differ (each search blocks one seed).
+void CycleSearch::find_dominated_edges(const SegmentGraph& graph, int stride) {
+  const int n = graph.num_vertices();
+  const int m = graph.num_edges();
+  dominated_.assign(m, 0);
+  is_seed_.assign(m, 0);
+  for (size_t i = 0; i < graph.detected_edges.size(); i += stride) {
+    is_seed_[graph.detected_edges[i]] = 1;
+  }
+  double total = 0.0;
+  for (const GraphEdge& e : graph.edges) total += e.weight;
+  const double margin = 1e-9 * (1.0 + total);
+  // Per neighbour x of u: the lightest edge u - x (for the current u), by stamp.
+  via_stamp_.assign(n, -1);
+  via_weight_.resize(n);
+  via_edge_.resize(n);
+  const auto& adjacency = graph.adjacency;
+  const auto& begin = graph.adjacency_begin;
+  for (int u = 0; u < n; ++u) {
+    for (int k = begin[u]; k < begin[u + 1]; ++k) {
+      const int x = adjacency[k].vertex;
+      const int e = adjacency[k].edge;
+      const double weight = graph.edges[e].weight;
+      if (via_stamp_[x] != u || weight < via_weight_[x] ||
+          (weight == via_weight_[x] && is_seed_[via_edge_[x]] && !is_seed_[e])) {
+        via_stamp_[x] = u;
+        via_weight_[x] = weight;
+        via_edge_[x] = e;
+      }
+    }
+    for (int k = begin[u]; k < begin[u + 1]; ++k) {
+      const int w = adjacency[k].vertex;
+      const int edge = adjacency[k].edge;
+      const double c = graph.edges[edge].weight;
+      if (w < u || !(c > margin)) continue;  // each edge once, from its lower end
+      // Seed edges of the detours found so far: -1 = a detour without any was found.
+      int first_a = -2, first_b = -2;
+      bool dominated = false;
+      for (int j = begin[w]; j < begin[w + 1] && !dominated; ++j) {
+        const int x = adjacency[j].vertex;
+        const int b = adjacency[j].edge;
+        if (x == u || via_stamp_[x] != u || b == edge) continue;
+        const int a = via_edge_[x];
+        if (a == edge || !(via_weight_[x] + graph.edges[b].weight < c - margin)) continue;
+        const int seed_a = is_seed_[a] ? a : -1;
+        const int seed_b = is_seed_[b] ? b : -1;
+        if (seed_a < 0 && seed_b < 0) {
+          dominated = true;
+        } else if (first_a == -2) {
+          first_a = seed_a;
+          first_b = seed_b;
+        } else {
+          // Two detours that no single blocked seed edge both cuts.
+          const auto shares = [&](int s) { return s >= 0 && (s == first_a || s == first_b); };
+          dominated = !shares(seed_a) && !shares(seed_b);
+        }
+      }
+      dominated_[edge] = dominated;
     }
   }
 }
 
-}  // namespace
-
-std::vector<CycleCandidate> search_cycle_candidates(const SegmentGraph& graph,
-                                                    const BdspOptions& options) {
-  std::vector<CycleCandidate> candidates;
+void CycleSearch::run(const SegmentGraph& graph, const BdspOptions& options) {
   const int n = graph.num_vertices();
-  const int stride = std::max(1, options.seed_stride);
-  thread_local Workspace ws;
-  ShortestPaths& from_first = ws.from_first;
-  ShortestPaths& from_second = ws.from_second;
-  ws.meeting_seen.assign(n, -1);
-
+  options.check();
+  const int stride = options.seed_stride;
   const int num_detected = static_cast<int>(graph.detected_edges.size());
-  for (int i = 0; i < num_detected; i += stride) {
+  num_vertices_ = n;
+  candidates_.clear();
+  found_.clear();
+  seed_source_.clear();
+
+  // The graph once, in the layout the searches read: CSR arcs with their weights inline,
+  // without the edges no search can use (find_dominated_edges).
+  find_dominated_edges(graph, stride);
+  arc_begin_.assign(n + 1, 0);
+  arcs_.clear();
+  for (int u = 0; u < n; ++u) {
+    for (int k = graph.adjacency_begin[u]; k < graph.adjacency_begin[u + 1]; ++k) {
+      const SegmentGraph::Incidence& in = graph.adjacency[k];
+      if (!dominated_[in.edge]) arcs_.push_back({in.vertex, in.edge, graph.edges[in.edge].weight});
+    }
+    arc_begin_[u + 1] = static_cast<int>(arcs_.size());
+  }
+  is_third_.assign(n, 0);
+  num_thirds_ = 0;
+  for (int e : graph.detected_edges) {
+    const int third = graph.edges[e].u;
+    if (!is_third_[third]) {
+      is_third_[third] = 1;
+      ++num_thirds_;
+    }
+  }
+  for (int tree = 0; tree < 2; ++tree) {
+    distance_[tree].resize(n);
+    shoelace_[tree].resize(n);
+    order_[tree].resize(n);
+  }
+  enter_.resize(n);
+  next_.resize(n);
+  size_.resize(n);
+  heap_position_.assign(n, -1);
+  meeting_seen_.assign(n, -1);
+  const int num_seeds = num_detected > 0 ? (num_detected + stride - 1) / stride : 0;
+  parents_.resize(static_cast<size_t>(2) * num_seeds * n);
+
+  for (int i = 0, slot = 0; i < num_detected; i += stride, ++slot) {
     const int seed = graph.detected_edges[i];
     const int s1 = graph.edges[seed].u;
     const int s2 = graph.edges[seed].v;
-    from_first.run(graph, s1, seed);
-    from_second.run(graph, s2, seed);
-    number_tree(from_second, s2, n, &ws);
+    seed_source_.push_back(s1);
+    seed_source_.push_back(s2);
+    int* parent1 = parents_.data() + static_cast<size_t>(2 * slot) * n;
+    int* parent2 = parent1 + n;
+    const int settled1 = shortest_paths(0, s1, seed, parent1);
+    const int settled2 = shortest_paths(1, s2, seed, parent2);
+
+    // Root-to-vertex sums of the shoelace terms, coordinates relative to s1 (smaller terms).
+    const Point origin = graph.vertices[s1];
+    for (int tree = 0; tree < 2; ++tree) {
+      const int* parent = tree == 0 ? parent1 : parent2;
+      const int* order = order_[tree].data();
+      double* sum = shoelace_[tree].data();
+      const int settled = tree == 0 ? settled1 : settled2;
+      sum[order[0]] = 0.0;
+      for (int k = 1; k < settled; ++k) {
+        const int v = order[k];
+        const Point p = graph.vertices[parent[v]] - origin;
+        const Point q = graph.vertices[v] - origin;
+        sum[v] = sum[parent[v]] + (p.x * q.y - q.x * p.y);
+      }
+    }
+    // Pre-order interval [enter, enter + size) of each settled vertex of the second tree, from
+    // subtree sizes (parents settle before their children).
+    {
+      const int* order = order_[1].data();
+      std::fill(size_.begin(), size_.end(), 0);
+      for (int k = settled2 - 1; k >= 0; --k) {
+        const int v = order[k];
+        ++size_[v];
+        if (k > 0) size_[parent2[v]] += size_[v];
+      }
+      enter_[s2] = 0;
+      next_[s2] = 1;
+      for (int k = 1; k < settled2; ++k) {
+        const int v = order[k];
+        const int p = parent2[v];
+        enter_[v] = next_[p];
+        next_[p] += size_[v];
+        next_[v] = enter_[v] + 1;
+      }
+    }
+
+    const double* d1 = distance_[0].data();
+    const double* d2 = distance_[1].data();
+    const double* sum1 = shoelace_[0].data();
+    const double* sum2 = shoelace_[1].data();
+    const int* enter = enter_.data();
+    const int* size = size_.data();
     for (int j = 0; j < num_detected; ++j) {
       if (j == i) continue;
       const int third = graph.edges[graph.detected_edges[j]].u;
-      if (!from_first.reached(third) || !from_second.reached(third)) continue;
+      if (parent1[third] == kUnreached || parent2[third] == kUnreached) continue;
 
       // The paths s1 -> third and third -> s2 meet at the vertex of the first path nearest s1
       // that also lies on the second, i.e. is an ancestor-or-self of `third` in the second tree.
-      const int third_enter = ws.enter[third];
+      const unsigned third_enter = static_cast<unsigned>(enter[third]);
       int meeting = third;
-      for (int v = from_first.parent_vertex(third); v != -1; v = from_first.parent_vertex(v)) {
-        if (ws.enter[v] >= 0 && ws.enter[v] <= third_enter && third_enter < ws.leave[v]) {
+      for (int v = parent1[third]; v != -1; v = parent1[v]) {
+        if (third_enter - static_cast<unsigned>(enter[v]) < static_cast<unsigned>(size[v])) {
           meeting = v;
         }
       }
-      if (ws.meeting_seen[meeting] == i) continue;  // same cycle as an earlier candidate
-      ws.meeting_seen[meeting] = i;
+      if (meeting_seen_[meeting] == i) continue;  // same cycle as an earlier candidate
+      meeting_seen_[meeting] = i;
+      // Fewer than three vertices: s1 and s2 joined directly (by the tree of the other).
+      if ((meeting == s1 && parent2[s1] == s2) || (meeting == s2 && parent1[s2] == s1)) continue;
 
-      CycleCandidate candidate;
-      candidate.seed_edge = seed;
-      // s1 ... meeting along the first path, then back to s2 along the second.
-      ws.stack.clear();
-      for (int v = meeting; v != -1; v = from_first.parent_vertex(v)) ws.stack.push_back(v);
-      size_t size = ws.stack.size();
-      for (int v = meeting; v != s2; v = from_second.parent_vertex(v)) ++size;
-      if (size < 3) continue;
-      candidate.vertices.reserve(size);
-      candidate.vertices.assign(ws.stack.rbegin(), ws.stack.rend());
-      for (int v = meeting; v != s2; v = from_second.parent_vertex(v)) {
-        candidate.vertices.push_back(from_second.parent_vertex(v));
-      }
+      CandidateSummary c;
+      c.seed_edge = seed;
       // The blocked seed edge weighs 0, so the gap is what the two paths add up to.
-      candidate.gap_length = from_first.distance(meeting) + from_second.distance(meeting);
-      candidate.area = cycle_area(graph, candidate.vertices);
-      candidates.push_back(std::move(candidate));
+      c.gap_length = d1[meeting] + d2[meeting];
+      c.area = 0.5 * std::abs(sum1[meeting] - sum2[meeting]);
+      candidates_.push_back(c);
+      found_.push_back({slot, meeting});
     }
   }
+}
+
+void CycleSearch::vertices(int k, std::vector<int>* out) const {
+  const Found& f = found_.at(k);
+  const int n = num_vertices_;
+  const int* parent1 = parents_.data() + static_cast<size_t>(2 * f.seed_slot) * n;
+  const int* parent2 = parent1 + n;
+  const int s2 = seed_source_[2 * f.seed_slot + 1];
+  out->clear();
+  for (int v = f.meeting; v != -1; v = parent1[v]) out->push_back(v);
+  std::reverse(out->begin(), out->end());
+  for (int v = f.meeting; v != s2; v = parent2[v]) out->push_back(parent2[v]);
+}
+
+CycleCandidate CycleSearch::candidate(int k) const {
+  CycleCandidate c;
+  const CandidateSummary& s = candidates_.at(k);
+  c.gap_length = s.gap_length;
+  c.area = s.area;
+  c.seed_edge = s.seed_edge;
+  vertices(k, &c.vertices);
+  return c;
+}
+
+std::vector<CycleCandidate> search_cycle_candidates(const SegmentGraph& graph,
+                                                    const BdspOptions& options) {
+  thread_local CycleSearch search;
+  search.run(graph, options);
+  std::vector<CycleCandidate> candidates(search.size());
+  for (int k = 0; k < search.size(); ++k) candidates[k] = search.candidate(k);
   return candidates;
 }
 

@@ -18,6 +18,88 @@ struct CycleCandidate {
 struct BdspOptions {
   // Seeds are every `seed_stride`-th detected segment (the paper samples every other one: 2).
   int seed_stride = 2;
+  // Search with the generic-graph baseline (search_cycle_candidates_generic: Boost.Graph's
+  // Dijkstra, every candidate materialised) instead of CycleSearch: the straightforward
+  // configuration, for benchmarks only. Same candidates up to shortest-path ties.
+  bool generic_graph = false;
+
+  // Throws std::invalid_argument naming a bad value (seed_stride < 1).
+  void check() const;
+};
+
+// What the boundary choice needs of a candidate; its vertices are listed on demand
+// (CycleSearch::vertices).
+struct CandidateSummary {
+  double gap_length = 0.0;  // |B_G|, as in CycleCandidate
+  double area = 0.0;        // enclosed area, as in CycleCandidate (to ~1e-9 relative)
+  int seed_edge = -1;       // the detected edge e_i the cycle was grown from
+};
+
+// The BDSP search of search_cycle_candidates, without materialising candidates: each candidate
+// is a summary (gap, area, seed) plus the meeting vertex of its two shortest paths, and the
+// search keeps each seed's two shortest-path trees so that the vertices of any candidate can be
+// listed afterwards. The area comes from root-to-vertex sums of shoelace terms along each tree.
+// Dijkstra stops once every third vertex is settled (the rest of the tree is never used).
+// All buffers are reused across calls: no allocation in steady state. Not thread-safe; use one
+// object per thread.
+class CycleSearch {
+ public:
+  // Throws std::invalid_argument for bad options (BdspOptions::check).
+  void run(const SegmentGraph& graph, const BdspOptions& options = {});
+
+  // Same candidates in the same order as search_cycle_candidates, with bit-identical gaps.
+  const std::vector<CandidateSummary>& candidates() const { return candidates_; }
+  int size() const { return static_cast<int>(candidates_.size()); }
+  // Candidate k's cycle (graph vertex ids; the cycle closes back to front), into *out.
+  void vertices(int k, std::vector<int>* out) const;
+  // Candidate k in full (vertices included), as search_cycle_candidates gives it.
+  CycleCandidate candidate(int k) const;
+
+ private:
+  struct Arc {
+    int vertex;
+    int edge;
+    double weight;
+  };
+  struct Found {
+    int seed_slot;  // index of the seed's trees in parents_
+    int meeting;    // where the path from s1 meets the path back to s2
+  };
+  // Dijkstra from `source` with `blocked` removed, into distance_[tree], the parent array
+  // `parent` and order_[tree] (settled vertices in order); stops when all third vertices are
+  // settled. Returns the number of settled vertices.
+  int shortest_paths(int tree, int source, int blocked, int* parent);
+  void find_dominated_edges(const SegmentGraph& graph, int stride);
+  void sift_up(int position);
+  void sift_down(int position);
+
+  int num_vertices_ = 0;
+  std::vector<Point> points_;  // vertex positions relative to the current seed's s1
+  std::vector<int> arc_begin_;
+  std::vector<Arc> arcs_;
+  std::vector<char> is_third_;
+  std::vector<char> is_seed_, dominated_;  // per edge
+  std::vector<int> via_stamp_, via_edge_;
+  std::vector<double> via_weight_;
+  int num_thirds_ = 0;
+  std::vector<double> distance_[2];
+  std::vector<double> shoelace_[2];  // root-to-vertex sums of cross(parent, child)
+  std::vector<int> order_[2];
+  std::vector<int> enter_, size_, next_;  // pre-order interval of the second tree
+  std::vector<int> meeting_seen_;
+  // Heap of (distance, vertex) with decrease-key, ordered as ShortestPaths orders it.
+  struct HeapEntry {
+    double distance;
+    int vertex;
+  };
+  std::vector<HeapEntry> heap_;
+  std::vector<int> heap_position_;
+  // Parent vertex per tree per seed: parents_[(2 * slot + tree) * n + v]; -1 for the root,
+  // -2 where not settled.
+  std::vector<int> parents_;
+  std::vector<int> seed_source_;  // s1, s2 per slot
+  std::vector<CandidateSummary> candidates_;
+  std::vector<Found> found_;
 };
 
 // For every sampled detected edge e_i = (s1, s2): block e_i, find shortest paths from s1 and s2,

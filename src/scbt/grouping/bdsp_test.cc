@@ -9,6 +9,7 @@
 #include <optional>
 #include <random>
 #include <set>
+#include <stdexcept>
 #include <tuple>
 #include <utility>
 
@@ -138,6 +139,61 @@ TEST_P(BdspMatchesReference, SameCandidatesInSameOrder) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Seeds, BdspMatchesReference, ::testing::Range(0u, 60u));
+
+// Segments with endpoints on a coarse integer grid: many equal path lengths (ties) and shared
+// endpoints (zero-weight paths of several segments).
+std::vector<Segment> grid_segments(std::mt19937& rng, int count) {
+  std::uniform_int_distribution<int> pos(0, 12), step(-3, 3);
+  std::vector<Segment> segments;
+  for (int attempt = 0; static_cast<int>(segments.size()) < count && attempt < 50 * count;
+       ++attempt) {
+    const Point a(10.0 * pos(rng), 10.0 * pos(rng));
+    const Segment s{a, a + Point(10.0 * step(rng), 10.0 * step(rng))};
+    if (std::none_of(segments.begin(), segments.end(),
+                     [&](const Segment& other) { return properly_cross(s, other); })) {
+      segments.push_back(s);
+    }
+  }
+  return segments;
+}
+
+// One CycleSearch reused over graphs of changing size, random and tie-ridden: summaries and the
+// vertices listed on demand are the reference's, candidate for candidate.
+TEST(CycleSearch, MatchesReferenceOnReusedBuffers) {
+  CycleSearch search;
+  std::vector<int> cycle;
+  for (unsigned trial = 0; trial < 120; ++trial) {
+    std::mt19937 rng(trial * 31u + 1u);
+    const int count = std::uniform_int_distribution<int>(3, 100)(rng);
+    const SegmentGraph graph = build_segment_graph(trial % 2 == 0 ? grid_segments(rng, count)
+                                                                  : random_segments(rng, count));
+    BdspOptions options;
+    options.seed_stride = std::uniform_int_distribution<int>(1, 3)(rng);
+    const std::vector<CycleCandidate> expected = reference_candidates(graph, options.seed_stride);
+    search.run(graph, options);
+    ASSERT_EQ(search.size(), static_cast<int>(expected.size())) << "trial " << trial;
+    for (int k = 0; k < search.size(); ++k) {
+      const CandidateSummary& got = search.candidates()[k];
+      EXPECT_EQ(got.seed_edge, expected[k].seed_edge) << trial << " " << k;
+      EXPECT_EQ(got.gap_length, expected[k].gap_length) << trial << " " << k;
+      EXPECT_NEAR(got.area, expected[k].area, 1e-9 * (1.0 + expected[k].area)) << trial << " " << k;
+      search.vertices(k, &cycle);
+      EXPECT_EQ(cycle, expected[k].vertices) << trial << " " << k;
+    }
+  }
+}
+
+TEST(CycleSearch, RejectsBadStrideAndIndex) {
+  BdspOptions options;
+  options.seed_stride = 0;
+  EXPECT_THROW(options.check(), std::invalid_argument);
+  CycleSearch search;
+  EXPECT_THROW(search.run(build_segment_graph({{{0, 0}, {10, 0}}}), options),
+               std::invalid_argument);
+  search.run(build_segment_graph({{{0, 0}, {40, 0}}, {{40, 0}, {0, 30}}, {{0, 30}, {0, 0}}}));
+  std::vector<int> cycle;
+  EXPECT_THROW(search.vertices(search.size(), &cycle), std::out_of_range);
+}
 
 class BdspProperty : public ::testing::TestWithParam<unsigned> {};
 

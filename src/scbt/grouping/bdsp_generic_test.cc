@@ -1,0 +1,151 @@
+// The generic-graph baseline (Boost.Graph) against the fast search.
+#include "scbt/grouping/bdsp_generic.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <random>
+#include <stdexcept>
+
+#include "scbt/grouping/bdsp.h"
+#include "scbt/grouping/segment_graph.h"
+
+namespace scbt {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+bool properly_cross(const Segment& s, const Segment& t) {
+  const auto cross = [](const Point& o, const Point& a, const Point& b) {
+    return (a.x - o.x) * (b.y - o.y) - (a.y - o.y) * (b.x - o.x);
+  };
+  const double d1 = cross(s.a, s.b, t.a), d2 = cross(s.a, s.b, t.b);
+  const double d3 = cross(t.a, t.b, s.a), d4 = cross(t.a, t.b, s.b);
+  return ((d1 > 0 && d2 < 0) || (d1 < 0 && d2 > 0)) && ((d3 > 0 && d4 < 0) || (d3 < 0 && d4 > 0));
+}
+
+// Short non-crossing random segments in a 300 px square. With `share_endpoints`, about one in
+// four starts where an earlier one ends (zero-weight paths of several segments, and ties).
+std::vector<Segment> random_segments(std::mt19937& rng, int count, bool share_endpoints) {
+  std::uniform_real_distribution<double> pos(0.0, 300.0), len(5.0, 50.0), angle(-kPi, kPi);
+  std::uniform_int_distribution<int> coin(0, 3);
+  std::vector<Segment> segments;
+  for (int attempt = 0; static_cast<int>(segments.size()) < count && attempt < 50 * count;
+       ++attempt) {
+    Point a(pos(rng), pos(rng));
+    if (share_endpoints && !segments.empty() && coin(rng) == 0) {
+      a = segments[std::uniform_int_distribution<size_t>(0, segments.size() - 1)(rng)].b;
+    }
+    const double t = angle(rng);
+    const Segment s{a, a + Point(std::cos(t), std::sin(t)) * len(rng)};
+    if (std::none_of(segments.begin(), segments.end(),
+                     [&](const Segment& other) { return properly_cross(s, other); })) {
+      segments.push_back(s);
+    }
+  }
+  return segments;
+}
+
+// Least Γ = gap / area among candidates whose area is within `min_similarity` of `area`
+// (infinity when none is).
+double least_admissible_cost(const std::vector<CandidateSummary>& candidates, double area,
+                             double min_similarity) {
+  double best = std::numeric_limits<double>::infinity();
+  for (const CandidateSummary& c : candidates) {
+    if (!(c.area > 0.0) || std::min(c.area / area, area / c.area) <= min_similarity) continue;
+    best = std::min(best, c.gap_length / c.area);
+  }
+  return best;
+}
+
+std::vector<CandidateSummary> summaries(const std::vector<CycleCandidate>& candidates) {
+  std::vector<CandidateSummary> out;
+  for (const CycleCandidate& c : candidates) out.push_back({c.gap_length, c.area, c.seed_edge});
+  return out;
+}
+
+// Segments that share no endpoint: every tie in path length is between the two ends of one
+// zero-weight segment, which never makes two shortest paths, so both searches must agree.
+class BdspGenericTieFree : public ::testing::TestWithParam<unsigned> {};
+
+TEST_P(BdspGenericTieFree, SameCandidatesAsCycleSearch) {
+  std::mt19937 rng(GetParam() * 2654435761u + 17u);
+  const int count = std::uniform_int_distribution<int>(3, 80)(rng);
+  const SegmentGraph graph = build_segment_graph(random_segments(rng, count, false));
+  BdspOptions options;
+  options.seed_stride = std::uniform_int_distribution<int>(1, 3)(rng);
+  const std::vector<CycleCandidate> generic = search_cycle_candidates_generic(graph, options);
+  CycleSearch search;
+  search.run(graph, options);
+  ASSERT_EQ(generic.size(), search.candidates().size());
+  std::vector<int> cycle;
+  for (size_t k = 0; k < generic.size(); ++k) {
+    const CandidateSummary& fast = search.candidates()[k];
+    EXPECT_EQ(generic[k].seed_edge, fast.seed_edge) << k;
+    EXPECT_NEAR(generic[k].gap_length, fast.gap_length, 1e-12 * (1.0 + fast.gap_length)) << k;
+    EXPECT_NEAR(generic[k].area, fast.area, 1e-9 * (1.0 + fast.area)) << k;
+    search.vertices(static_cast<int>(k), &cycle);
+    EXPECT_EQ(generic[k].vertices, cycle) << k;
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(Seeds, BdspGenericTieFree, ::testing::Range(0u, 60u));
+
+// Shared endpoints: whatever parents the two searches pick among equal paths, the least cost
+// of a candidate whose area is near a reference area is the same.
+class BdspGenericAnyGraph : public ::testing::TestWithParam<unsigned> {};
+
+TEST_P(BdspGenericAnyGraph, SameLeastAdmissibleCost) {
+  std::mt19937 rng(GetParam() * 40503u + 5u);
+  const int count = std::uniform_int_distribution<int>(3, 80)(rng);
+  const SegmentGraph graph = build_segment_graph(random_segments(rng, count, true));
+  BdspOptions options;
+  options.seed_stride = std::uniform_int_distribution<int>(1, 3)(rng);
+  const std::vector<CandidateSummary> generic =
+      summaries(search_cycle_candidates_generic(graph, options));
+  CycleSearch search;
+  search.run(graph, options);
+  ASSERT_EQ(generic.size(), search.candidates().size());
+  // Reference areas: those of the candidates themselves and a spread around them.
+  std::uniform_real_distribution<double> scale(0.5, 2.0);
+  for (size_t k = 0; k < generic.size(); ++k) {
+    for (const double area : {generic[k].area, generic[k].area * scale(rng)}) {
+      if (!(area > 0.0)) continue;
+      const double expected = least_admissible_cost(generic, area, 0.8);
+      const double got = least_admissible_cost(search.candidates(), area, 0.8);
+      if (std::isinf(expected)) {
+        EXPECT_TRUE(std::isinf(got)) << k;
+      } else {
+        EXPECT_NEAR(got, expected, 1e-9 * expected) << k << " area " << area;
+      }
+    }
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(Seeds, BdspGenericAnyGraph, ::testing::Range(0u, 60u));
+
+TEST(BdspGeneric, RejectsBadStride) {
+  BdspOptions options;
+  options.seed_stride = 0;
+  const SegmentGraph graph = build_segment_graph({{{0, 0}, {10, 0}}});
+  EXPECT_THROW(search_cycle_candidates_generic(graph, options), std::invalid_argument);
+}
+
+TEST(BdspGeneric, TriangleOfSegments) {
+  const SegmentGraph graph =
+      build_segment_graph({{{0, 0}, {40, 0}}, {{40, 0}, {0, 30}}, {{0, 30}, {0, 0}}});
+  BdspOptions options;
+  options.seed_stride = 1;
+  const std::vector<CycleCandidate> candidates = search_cycle_candidates_generic(graph, options);
+  ASSERT_FALSE(candidates.empty());
+  for (const CycleCandidate& c : candidates) {
+    EXPECT_EQ(c.vertices.size(), 3u);
+    EXPECT_EQ(c.gap_length, 0.0);
+    EXPECT_DOUBLE_EQ(c.area, 600.0);
+  }
+}
+
+}  // namespace
+}  // namespace scbt
