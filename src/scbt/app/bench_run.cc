@@ -51,16 +51,28 @@ struct Samples {
   std::string config;
   std::unique_ptr<Tracker> tracker;
   std::vector<double> line, grouping, total, cpu;
+  std::vector<double> filter, graph, search, choice;
   std::vector<double> errors;
   int held = 0;
   double detected = 0.0;
 };
+
+Samples make_samples(const std::string& config, const TrackerOptions& options) {
+  Samples samples;
+  samples.config = config;
+  samples.tracker = std::make_unique<Tracker>(options);
+  return samples;
+}
 
 BenchConfigResult summarise(const Samples& s) {
   BenchConfigResult r;
   r.config = s.config;
   r.line = time_stats(s.line);
   r.grouping = time_stats(s.grouping);
+  r.filter = time_stats(s.filter);
+  r.graph = time_stats(s.graph);
+  r.search = time_stats(s.search);
+  r.choice = time_stats(s.choice);
   r.total = time_stats(s.total);
   r.cpu = time_stats(s.cpu);
   r.fps = r.total.mean > 0.0 ? 1000.0 / r.total.mean : 0.0;
@@ -113,7 +125,9 @@ BenchReport run_bench(const BenchRunOptions& options, std::ostream& log) {
   if (!options.csv.empty()) {
     csv = std::make_unique<AtomicFile>(options.csv);
     csv->stream() << "sequence,config,frames,line_median_ms,line_p90_ms,line_p99_ms,"
-                     "grouping_median_ms,grouping_p90_ms,grouping_p99_ms,total_mean_ms,"
+                     "grouping_median_ms,grouping_p90_ms,grouping_p99_ms,filter_median_ms,"
+                     "graph_median_ms,search_median_ms,choice_median_ms,filter_mean_ms,"
+                     "graph_mean_ms,search_mean_ms,choice_mean_ms,total_mean_ms,"
                      "total_median_ms,total_p90_ms,total_p99_ms,cpu_mean_ms,cpu_median_ms,fps,held,"
                      "success_10px,"
                      "mean_detected,peak_rss_kb\n";
@@ -129,13 +143,11 @@ BenchReport run_bench(const BenchRunOptions& options, std::ostream& log) {
     }
 
     std::vector<Samples> runs;
-    runs.push_back(
-        {"optimised", std::make_unique<Tracker>(options.tracker), {}, {}, {}, {}, {}, 0, 0});
+    runs.push_back(make_samples("optimised", options.tracker));
     if (options.compare) {
       TrackerOptions plain = options.tracker;
       plain.detector.crop_to_boundary = false;
-      runs.push_back(
-          {"straightforward", std::make_unique<Tracker>(plain), {}, {}, {}, {}, {}, 0, 0});
+      runs.push_back(make_samples("straightforward", plain));
     }
 
     cv::Mat frame;
@@ -157,6 +169,10 @@ BenchReport run_bench(const BenchRunOptions& options, std::ostream& log) {
             std::chrono::duration<double, std::milli>(Clock::now() - start).count());
         run.line.push_back(result.line_ms);
         run.grouping.push_back(result.grouping_ms);
+        run.filter.push_back(result.stages.filter_ms);
+        run.graph.push_back(result.stages.graph_ms);
+        run.search.push_back(result.stages.search_ms);
+        run.choice.push_back(result.stages.choice_ms);
         run.held += result.held ? 1 : 0;
         run.detected += result.num_detected;
         run.errors.push_back(static_cast<size_t>(frames) < truth.size()
@@ -181,10 +197,13 @@ BenchReport run_bench(const BenchRunOptions& options, std::ostream& log) {
         csv->stream() << result.name << ',' << c.config << ',' << result.frames << ','
                       << c.line.median << ',' << c.line.p90 << ',' << c.line.p99 << ','
                       << c.grouping.median << ',' << c.grouping.p90 << ',' << c.grouping.p99 << ','
-                      << c.total.mean << ',' << c.total.median << ',' << c.total.p90 << ','
-                      << c.total.p99 << ',' << c.cpu.mean << ',' << c.cpu.median << ',' << c.fps
-                      << ',' << c.held << ',' << c.success_10px << ',' << c.mean_detected << ','
-                      << result.peak_rss_kb << '\n';
+                      << c.filter.median << ',' << c.graph.median << ',' << c.search.median << ','
+                      << c.choice.median << ',' << c.filter.mean << ',' << c.graph.mean << ','
+                      << c.search.mean << ',' << c.choice.mean << ',' << c.total.mean << ','
+                      << c.total.median << ',' << c.total.p90 << ',' << c.total.p99 << ','
+                      << c.cpu.mean << ',' << c.cpu.median << ',' << c.fps << ',' << c.held << ','
+                      << c.success_10px << ',' << c.mean_detected << ',' << result.peak_rss_kb
+                      << '\n';
       }
     }
     report.sequences.push_back(std::move(result));
@@ -231,6 +250,14 @@ std::string format_bench_report(const BenchReport& report) {
           << fixed(s.peak_rss_kb / 1024.0, 1) << " | "
           << (k == 0 && s.speedup > 0.0 ? fixed(s.speedup, 2) + "x" : std::string("")) << " |\n";
     }
+  }
+  out << "\nGrouping stage by stage, ms mean / p99 (optimised configuration):\n\n"
+         "| sequence | filter | graph | BDSP | choice |\n|---|---|---|---|---|\n";
+  for (const BenchSequenceResult& s : report.sequences) {
+    const BenchConfigResult& c = s.configs[0];
+    auto cell = [](const TimeStats& t) { return fixed(t.mean, 3) + " / " + fixed(t.p99, 3); };
+    out << "| " << s.name << " | " << cell(c.filter) << " | " << cell(c.graph) << " | "
+        << cell(c.search) << " | " << cell(c.choice) << " |\n";
   }
   out << "\nTable I style (optimised configuration, one core):\n\n"
          "| sequence | line detection ms | grouping ms | fps |\n|---|---|---|---|\n";

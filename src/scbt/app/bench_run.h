@@ -40,9 +40,11 @@ struct BenchConfigResult {
   std::string config;  // "optimised" or "straightforward"
   TimeStats line;      // colour conversion + line detection
   TimeStats grouping;  // filter + graph + BDSP + choice
-  TimeStats total;     // the whole Tracker::track call (wall clock)
-  TimeStats cpu;       // the same call in CPU time of the thread: robust to a shared machine
-  double fps = 0.0;    // tracked frames per second of tracking time
+  // The grouping stages one by one (a lost frame's motion estimate is only in `grouping`).
+  TimeStats filter, graph, search, choice;
+  TimeStats total;   // the whole Tracker::track call (wall clock)
+  TimeStats cpu;     // the same call in CPU time of the thread: robust to a shared machine
+  double fps = 0.0;  // tracked frames per second of tracking time
   int held = 0;
   double success_10px = 0.0;  // share of frames (the initial one included) with E_AL < 10
   double mean_detected = 0.0;

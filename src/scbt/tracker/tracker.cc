@@ -90,7 +90,14 @@ Tracker::Attempt Tracker::attempt(const cv::Mat& frame, const Polygon& prior) {
   a.detected = detector_->detect_in(gray_, a.roi.tl(), frame_size_);
   a.line_ms = elapsed_ms(line_start);
 
-  const Clock::time_point grouping_start = Clock::now();
+  Clock::time_point stage_start = Clock::now();
+  // Ends the stage that began at stage_start, returning its time, and starts the next.
+  auto lap = [&stage_start]() {
+    const Clock::time_point now = Clock::now();
+    const double ms = std::chrono::duration<double, std::milli>(now - stage_start).count();
+    stage_start = now;
+    return ms;
+  };
   a.kept = filter_segments_near_boundary(a.detected, prior, options_.filter_distance);
   if (static_cast<int>(a.kept.size()) > options_.max_segments) {
     a.num_dropped = static_cast<int>(a.kept.size()) - options_.max_segments;
@@ -98,13 +105,17 @@ Tracker::Attempt Tracker::attempt(const cv::Mat& frame, const Polygon& prior) {
                      [](const Segment& l, const Segment& r) { return l.length() > r.length(); });
     a.kept.resize(options_.max_segments);
   }
+  a.stages.filter_ms = lap();
   a.graph = build_segment_graph(a.kept);
+  a.stages.graph_ms = lap();
   a.candidates = search_cycle_candidates(a.graph, options_.bdsp);
+  a.stages.search_ms = lap();
   a.choice = chooser_.choose(
       a.candidates,
       [&](int index, std::vector<int>* cycle) { *cycle = a.candidates[index].vertices; }, a.graph,
       prior, options_.min_area_similarity, options_.cost_tolerance);
-  a.grouping_ms = elapsed_ms(grouping_start);
+  a.stages.choice_ms = lap();
+  a.grouping_ms = a.stages.filter_ms + a.stages.graph_ms + a.stages.search_ms + a.stages.choice_ms;
   return a;
 }
 
@@ -120,6 +131,7 @@ TrackResult Tracker::track(const cv::Mat& frame) {
   Attempt a = attempt(frame, boundary_);
   result.line_ms = a.line_ms;
   result.grouping_ms = a.grouping_ms;
+  result.stages = a.stages;
 
   // Lost: the boundary may have moved out of the search band (fast motion, camera swing).
   // Estimate how the content around it moved since it was last tracked, and search again there.
@@ -129,7 +141,8 @@ TrackResult Tracker::track(const cv::Mat& frame) {
     to_gray(frame(reference_roi_), &current);
     const std::optional<TranslationEstimate> motion =
         estimate_translation(reference_gray_, current);
-    result.grouping_ms += elapsed_ms(recover_start);
+    result.stages.recovery_ms = elapsed_ms(recover_start);
+    result.grouping_ms += result.stages.recovery_ms;
     // A move well inside the search band was already searched; re-searching near the same place
     // only invites a worse cycle, so only a move of at least half the band is followed.
     if (motion && cv::norm(motion->shift) >= 0.5 * options_.filter_distance) {
@@ -138,6 +151,10 @@ TrackResult Tracker::track(const cv::Mat& frame) {
       Attempt retry = attempt(frame, moved);
       result.line_ms += retry.line_ms;
       result.grouping_ms += retry.grouping_ms;
+      result.stages.filter_ms += retry.stages.filter_ms;
+      result.stages.graph_ms += retry.stages.graph_ms;
+      result.stages.search_ms += retry.stages.search_ms;
+      result.stages.choice_ms += retry.stages.choice_ms;
       if (retry.choice) {
         a = std::move(retry);
         result.recovered = true;

@@ -13,6 +13,15 @@
 
 namespace scbt {
 
+// Where the grouping time of one frame went (milliseconds; a recovery search adds to each).
+struct StageTimes {
+  double filter_ms = 0.0;    // stage 2: distance filter (and the max_segments cap)
+  double graph_ms = 0.0;     // stages 3-4: Delaunay gap filling and the graph
+  double search_ms = 0.0;    // stage 5: BDSP cycle candidates
+  double choice_ms = 0.0;    // stage 6: the (stabilised) choice
+  double recovery_ms = 0.0;  // the motion estimate of a lost frame
+};
+
 struct TrackResult {
   Polygon boundary;              // the tracked boundary (the previous one when held)
   bool held = false;             // no admissible candidate: the previous boundary was kept
@@ -26,7 +35,8 @@ struct TrackResult {
   int num_edges = 0;
   int num_candidates = 0;    // BDSP cycle candidates evaluated
   double line_ms = 0.0;      // colour conversion + line detection
-  double grouping_ms = 0.0;  // filter + graph + BDSP + choice
+  double grouping_ms = 0.0;  // filter + graph + BDSP + choice (+ recovery): the sum of `stages`
+  StageTimes stages;
   double total_ms() const { return line_ms + grouping_ms; }
 };
 
@@ -81,6 +91,7 @@ class Tracker {
     std::optional<BoundaryChoice> choice;
     double line_ms = 0.0;
     double grouping_ms = 0.0;
+    StageTimes stages;
   };
   Attempt attempt(const cv::Mat& frame, const Polygon& prior);
   StableChooser chooser_;  // its buffers and distance cache are reused frame to frame
