@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <cstring>
 #include <limits>
 #include <stdexcept>
 #include <string>
@@ -25,102 +27,156 @@ Polygon candidate_polygon(const SegmentGraph& graph, const CycleCandidate& candi
 namespace {
 
 constexpr int kUnreached = -2;
+constexpr int kInLevel = -3;  // heap position of a vertex waiting in the level list
+// Each vertex's arcs come in whole blocks of this many, so that the relaxation loop runs a fixed
+// number of times for most vertices (Delaunay degrees are mostly 4-7).
+constexpr int kArcBlock = 8;
 
-// Heap order of ShortestPaths: (distance, vertex id).
-struct Before {
-  template <typename Entry>
-  bool operator()(const Entry& a, const Entry& b) const {
-    return a.distance < b.distance || (a.distance == b.distance && a.vertex < b.vertex);
-  }
-};
+// Heap keys: (distance, vertex id) in one unsigned 128-bit integer, so that the order of
+// ShortestPaths (distance first, then id) is a single comparison. Distances are non-negative,
+// and the bits of non-negative doubles order as the doubles do.
+using HeapKey = unsigned __int128;
+
+HeapKey heap_key(double distance, int vertex) {
+  uint64_t bits;
+  std::memcpy(&bits, &distance, sizeof bits);
+  return (static_cast<HeapKey>(bits) << 32) | static_cast<uint32_t>(vertex);
+}
+
+int key_vertex(HeapKey key) { return static_cast<int>(static_cast<uint32_t>(key)); }
 
 }  // namespace
 
 void CycleSearch::sift_up(int position) {
-  const HeapEntry entry = heap_[position];
+  HeapKey* heap = heap_.data();
+  int* where = heap_position_.data();
+  const HeapKey key = heap[position];
   while (position > 0) {
     const int parent = (position - 1) / 4;
-    if (!Before()(entry, heap_[parent])) break;
-    heap_[position] = heap_[parent];
-    heap_position_[heap_[position].vertex] = position;
+    if (!(key < heap[parent])) break;
+    heap[position] = heap[parent];
+    where[key_vertex(heap[position])] = position;
     position = parent;
   }
-  heap_[position] = entry;
-  heap_position_[entry.vertex] = position;
+  heap[position] = key;
+  where[key_vertex(key)] = position;
 }
 
 void CycleSearch::sift_down(int position) {
-  const int size = static_cast<int>(heap_.size());
-  const HeapEntry entry = heap_[position];
+  HeapKey* heap = heap_.data();
+  int* where = heap_position_.data();
+  const int size = heap_size_;
+  const HeapKey key = heap[position];
   for (;;) {
     const int first = 4 * position + 1;
     if (first >= size) break;
     int best = first;
     const int last = std::min(first + 4, size);
     for (int c = first + 1; c < last; ++c) {
-      if (Before()(heap_[c], heap_[best])) best = c;
+      if (heap[c] < heap[best]) best = c;
     }
-    if (!Before()(heap_[best], entry)) break;
-    heap_[position] = heap_[best];
-    heap_position_[heap_[position].vertex] = position;
+    if (!(heap[best] < key)) break;
+    heap[position] = heap[best];
+    where[key_vertex(heap[position])] = position;
     position = best;
   }
-  heap_[position] = entry;
-  heap_position_[entry.vertex] = position;
+  heap[position] = key;
+  where[key_vertex(key)] = position;
 }
 
 // The same relaxations in the same order as ShortestPaths::run, so the same distances (bit for
-// bit) and parents (ties included).
-int CycleSearch::shortest_paths(int tree, int source, int blocked, int* parent) {
+// bit) and parents (ties included). The blocked edge's arcs weigh infinity meanwhile.
+int CycleSearch::shortest_paths(int tree, int source, int* parent) {
   const int n = num_vertices_;
   double* distance = distance_[tree].data();
   int* order = order_[tree].data();
-  std::fill(distance, distance + n, std::numeric_limits<double>::infinity());
+  std::fill(distance, distance + n + 1, std::numeric_limits<double>::infinity());
   std::fill(parent, parent + n, kUnreached);
-  heap_.clear();
 
   const Arc* arcs = arcs_.data();
   const int* begin = arc_begin_.data();
   const char* is_third = is_third_.data();
   int* position = heap_position_.data();
+  HeapKey* heap = heap_.data();
   distance[source] = 0.0;
   parent[source] = -1;
-  heap_.push_back({0.0, source});
+  heap[0] = heap_key(0.0, source);
+  heap_size_ = 1;
   position[source] = 0;
   int settled = 0, thirds_left = num_thirds_;
-  while (!heap_.empty()) {
-    const HeapEntry top = heap_.front();
-    const int u = top.vertex;
-    position[u] = -1;
-    const HeapEntry last = heap_.back();
-    heap_.pop_back();
-    if (!heap_.empty()) {
-      heap_.front() = last;
-      sift_down(0);
+  // Vertices reached at exactly the distance of the vertex last settled (over zero-weight
+  // edges, mostly the other end of a detected segment) wait in `level` instead of the heap: they
+  // come next, before any heap entry but those of the same distance and a smaller id.
+  int* level = level_.data();
+  int* improved = improved_.data();
+  int level_size = 0;
+  while (heap_size_ > 0 || level_size > 0) {
+    int u;
+    if (level_size > 0) {
+      int best = 0;
+      for (int k = 1; k < level_size; ++k) {
+        if (level[k] < level[best]) best = k;
+      }
+      u = level[best];
+      if (heap_size_ > 0 && heap[0] < heap_key(distance[u], u)) {
+        u = -1;
+      } else {
+        level[best] = level[--level_size];
+        position[u] = -1;
+      }
+    } else {
+      u = -1;
+    }
+    if (u < 0) {
+      u = key_vertex(heap[0]);
+      position[u] = -1;
+      if (--heap_size_ > 0) {
+        heap[0] = heap[heap_size_];
+        sift_down(0);
+      }
     }
     order[settled++] = u;
-    if (is_third[u] && --thirds_left == 0) break;  // the rest is never used
-    const double d = top.distance;
-    for (int k = begin[u]; k < begin[u + 1]; ++k) {
-      const Arc& arc = arcs[k];
-      if (arc.edge == blocked) continue;
-      const double candidate = d + arc.weight;
-      const int w = arc.vertex;
-      if (candidate < distance[w]) {
-        distance[w] = candidate;
-        parent[w] = u;
-        if (position[w] < 0) {
-          heap_.push_back({candidate, w});
-          sift_up(static_cast<int>(heap_.size()) - 1);
-        } else {
-          heap_[position[w]].distance = candidate;
-          sift_up(position[w]);
+    thirds_left -= is_third[u];
+    if (thirds_left == 0) break;  // the rest is never used
+    const double d = distance[u];
+    // First the distances, without a branch per arc (whether an arc improves is close to a coin
+    // toss); the improved neighbours are collected and then queued. A neighbour listed twice
+    // (parallel arcs) is queued twice, harmlessly: it ends with the smaller distance, parent u.
+    int num_improved = 0;
+    for (int k = begin[u]; k < begin[u + 1]; k += kArcBlock) {
+      for (int b = 0; b < kArcBlock; ++b) {  // padded with arcs that never improve
+        const double candidate = d + arcs[k + b].weight;
+        const int w = arcs[k + b].vertex;
+        const double old = distance[w];
+        const bool better = candidate < old;
+        distance[w] = better ? candidate : old;
+        improved[num_improved] = w;
+        num_improved += better;
+      }
+    }
+    for (int k = 0; k < num_improved; ++k) {
+      const int w = improved[k];
+      const double candidate = distance[w];
+      parent[w] = u;
+      if (position[w] == kInLevel) continue;  // listed twice
+      if (position[w] < 0) {
+        if (candidate == d) {
+          level[level_size++] = w;
+          position[w] = kInLevel;
+          continue;
         }
+        heap[heap_size_] = heap_key(candidate, w);
+        sift_up(heap_size_++);
+      } else {
+        heap[position[w]] = heap_key(candidate, w);
+        sift_up(position[w]);
       }
     }
   }
   // Vertices left in the heap keep their tentative parent; no third vertex depends on them.
-  for (const HeapEntry& e : heap_) position[e.vertex] = -1;
+  for (int k = 0; k < heap_size_; ++k) position[key_vertex(heap[k])] = -1;
+  for (int k = 0; k < level_size; ++k) position[level[k]] = -1;
+  heap_size_ = 0;
   return settled;
 }
 
@@ -142,6 +198,7 @@ void CycleSearch::find_dominated_edges(const SegmentGraph& graph, int stride) {
   double total = 0.0;
   for (const GraphEdge& e : graph.edges) total += e.weight;
   const double margin = 1e-9 * (1.0 + total);
+  tolerance_ = margin;
   // Per neighbour x of u: the lightest edge u - x (for the current u), by stamp.
   via_stamp_.assign(n, -1);
   via_weight_.resize(n);
@@ -207,12 +264,18 @@ void CycleSearch::run(const SegmentGraph& graph, const BdspOptions& options) {
   find_dominated_edges(graph, stride);
   arc_begin_.assign(n + 1, 0);
   arcs_.clear();
+  int max_degree = 0;
   for (int u = 0; u < n; ++u) {
     for (int k = graph.adjacency_begin[u]; k < graph.adjacency_begin[u + 1]; ++k) {
       const SegmentGraph::Incidence& in = graph.adjacency[k];
       if (!dominated_[in.edge]) arcs_.push_back({in.vertex, in.edge, graph.edges[in.edge].weight});
     }
+    // Pad to whole blocks with arcs to the spare vertex n, of infinite weight.
+    while (arcs_.size() % kArcBlock != 0) {
+      arcs_.push_back({n, -1, std::numeric_limits<double>::infinity()});
+    }
     arc_begin_[u + 1] = static_cast<int>(arcs_.size());
+    max_degree = std::max(max_degree, arc_begin_[u + 1] - arc_begin_[u]);
   }
   is_third_.assign(n, 0);
   num_thirds_ = 0;
@@ -224,14 +287,19 @@ void CycleSearch::run(const SegmentGraph& graph, const BdspOptions& options) {
     }
   }
   for (int tree = 0; tree < 2; ++tree) {
-    distance_[tree].resize(n);
+    distance_[tree].resize(n + 1);  // n: the spare vertex of padding arcs
     shoelace_[tree].resize(n);
     order_[tree].resize(n);
   }
+  bound_.resize(n);
+  fork_.resize(n);
   enter_.resize(n);
   next_.resize(n);
   size_.resize(n);
   heap_position_.assign(n, -1);
+  heap_.resize(n + 1);
+  level_.resize(n + 1);
+  improved_.resize(max_degree + kArcBlock);
   meeting_seen_.assign(n, -1);
   const int num_seeds = num_detected > 0 ? (num_detected + stride - 1) / stride : 0;
   parents_.resize(static_cast<size_t>(2) * num_seeds * n);
@@ -244,8 +312,19 @@ void CycleSearch::run(const SegmentGraph& graph, const BdspOptions& options) {
     seed_source_.push_back(s2);
     int* parent1 = parents_.data() + static_cast<size_t>(2 * slot) * n;
     int* parent2 = parent1 + n;
-    const int settled1 = shortest_paths(0, s1, seed, parent1);
-    const int settled2 = shortest_paths(1, s2, seed, parent2);
+    // Block the seed edge: its arcs weigh infinity for the two searches.
+    blocked_.clear();
+    for (const int end : {s1, s2}) {
+      for (int k = arc_begin_[end]; k < arc_begin_[end + 1]; ++k) {
+        if (arcs_[k].edge == seed) {
+          blocked_.push_back({k, arcs_[k].weight});
+          arcs_[k].weight = std::numeric_limits<double>::infinity();
+        }
+      }
+    }
+    const int settled1 = shortest_paths(0, s1, parent1);
+    const int settled2 = shortest_paths(1, s2, parent2);
+    for (const auto& [k, weight] : blocked_) arcs_[k].weight = weight;
 
     // Root-to-vertex sums of the shoelace terms, coordinates relative to s1 (smaller terms).
     const Point origin = graph.vertices[s1];
@@ -260,6 +339,22 @@ void CycleSearch::run(const SegmentGraph& graph, const BdspOptions& options) {
         const Point p = graph.vertices[parent[v]] - origin;
         const Point q = graph.vertices[v] - origin;
         sum[v] = sum[parent[v]] + (p.x * q.y - q.x * p.y);
+      }
+    }
+    // bound[v]: the largest d1 - d2 on the first tree's path s1 ... v (see the walk below).
+    {
+      const double* d1 = distance_[0].data();
+      const double* d2 = distance_[1].data();
+      const int* order = order_[0].data();
+      double* bound = bound_.data();
+      int* fork = fork_.data();
+      bound[s1] = d1[s1] - d2[s1];
+      fork[s1] = s1;
+      for (int k = 1; k < settled1; ++k) {
+        const int v = order[k];
+        const int p = parent1[v];
+        bound[v] = std::max(bound[p], d1[v] - d2[v]);
+        fork[v] = parent2[v] == p ? fork[p] : v;
       }
     }
     // Pre-order interval [enter, enter + size) of each settled vertex of the second tree, from
@@ -289,6 +384,8 @@ void CycleSearch::run(const SegmentGraph& graph, const BdspOptions& options) {
     const double* sum2 = shoelace_[1].data();
     const int* enter = enter_.data();
     const int* size = size_.data();
+    const double* bound = bound_.data();
+    const int* fork = fork_.data();
     for (int j = 0; j < num_detected; ++j) {
       if (j == i) continue;
       const int third = graph.edges[graph.detected_edges[j]].u;
@@ -296,9 +393,16 @@ void CycleSearch::run(const SegmentGraph& graph, const BdspOptions& options) {
 
       // The paths s1 -> third and third -> s2 meet at the vertex of the first path nearest s1
       // that also lies on the second, i.e. is an ancestor-or-self of `third` in the second tree.
+      // A vertex v on both paths has d1(v) - d2(v) = d1(third) - d2(third) (both continue by a
+      // shortest path v ... third; up to rounding, far below `tolerance_`), while elsewhere on
+      // the first path the difference is smaller; so the walk up the first path stops where
+      // nothing above can be on the second (bound = the largest difference from s1 down).
+      const double limit = d1[third] - d2[third] - tolerance_;
+      // From `third` up to fork[third] both trees follow the same parents, so all of it is on
+      // both paths; only above the fork can the paths share a vertex again (where they tie).
       const unsigned third_enter = static_cast<unsigned>(enter[third]);
-      int meeting = third;
-      for (int v = parent1[third]; v != -1; v = parent1[v]) {
+      int meeting = fork[third];
+      for (int v = parent1[meeting]; v != -1 && bound[v] >= limit; v = parent1[v]) {
         if (third_enter - static_cast<unsigned>(enter[v]) < static_cast<unsigned>(size[v])) {
           meeting = v;
         }

@@ -1,6 +1,7 @@
 // Stage 5: Bidirectional Shortest Path cycle candidates (paper §III-D, Fig. 4e, Algorithm 1).
 #pragma once
 
+#include <utility>
 #include <vector>
 
 #include "scbt/geometry/polygon.h"
@@ -65,10 +66,10 @@ class CycleSearch {
     int seed_slot;  // index of the seed's trees in parents_
     int meeting;    // where the path from s1 meets the path back to s2
   };
-  // Dijkstra from `source` with `blocked` removed, into distance_[tree], the parent array
-  // `parent` and order_[tree] (settled vertices in order); stops when all third vertices are
-  // settled. Returns the number of settled vertices.
-  int shortest_paths(int tree, int source, int blocked, int* parent);
+  // Dijkstra from `source` (the seed's arcs weighing infinity) into distance_[tree], the parent
+  // array `parent` and order_[tree] (settled vertices in order); stops when all third vertices
+  // are settled. Returns the number of settled vertices.
+  int shortest_paths(int tree, int source, int* parent);
   void find_dominated_edges(const SegmentGraph& graph, int stride);
   void sift_up(int position);
   void sift_down(int position);
@@ -86,14 +87,20 @@ class CycleSearch {
   std::vector<double> shoelace_[2];  // root-to-vertex sums of cross(parent, child)
   std::vector<int> order_[2];
   std::vector<int> enter_, size_, next_;  // pre-order interval of the second tree
+  std::vector<double> bound_;             // largest d1 - d2 from s1 down the first tree
+  // fork_[v]: the nearest vertex up the first tree from v (v itself included) whose two parents
+  // differ: up to it, the paths from v to s1 and to s2 are the same.
+  std::vector<int> fork_;
+  // Far above the rounding error of any path length (a fraction 1e-9 of all weights).
+  double tolerance_ = 0.0;
   std::vector<int> meeting_seen_;
-  // Heap of (distance, vertex) with decrease-key, ordered as ShortestPaths orders it.
-  struct HeapEntry {
-    double distance;
-    int vertex;
-  };
-  std::vector<HeapEntry> heap_;
+  // Indexed 4-ary heap of (distance, vertex) keys with decrease-key, ordered as ShortestPaths
+  // orders it.
+  std::vector<unsigned __int128> heap_;
+  int heap_size_ = 0;
+  std::vector<int> level_, improved_;
   std::vector<int> heap_position_;
+  std::vector<std::pair<int, double>> blocked_;  // arcs of the seed edge and their weights
   // Parent vertex per tree per seed: parents_[(2 * slot + tree) * n + v]; -1 for the root,
   // -2 where not settled.
   std::vector<int> parents_;
