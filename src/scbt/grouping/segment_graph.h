@@ -41,6 +41,8 @@ struct SegmentGraph {
 // zero-length and repeated segments are dropped, the endpoints are Delaunay-triangulated and every
 // triangulation edge that is not a detected segment becomes a generated edge.
 SegmentGraph build_segment_graph(const std::vector<Segment>& detected);
+// The same into `graph`, reusing its buffers (a tracker calls it every frame).
+void build_segment_graph(const std::vector<Segment>& detected, SegmentGraph* graph);
 
 // Fills adjacency_begin/adjacency from vertices and edges.
 void build_adjacency(SegmentGraph* graph);

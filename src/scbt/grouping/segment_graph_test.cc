@@ -256,5 +256,74 @@ TEST(BuildAdjacency, HandMadeGraph) {
   EXPECT_EQ(graph.adjacency_begin, (std::vector<int>{0, 2, 4, 6, 6}));  // vertex 3 isolated
 }
 
+// The vertex numbering and detected edges written plainly: a map of points in first-appearance
+// order and a set of undirected vertex pairs.
+struct PlainVertices {
+  std::vector<Point> vertices;
+  std::vector<std::pair<int, int>> detected;
+};
+PlainVertices plain_vertices(const std::vector<Segment>& segments) {
+  PlainVertices plain;
+  std::map<std::pair<double, double>, int> id;
+  auto vertex = [&](const Point& p) {
+    auto [it, inserted] = id.try_emplace({p.x, p.y}, static_cast<int>(plain.vertices.size()));
+    if (inserted) plain.vertices.push_back(p);
+    return it->second;
+  };
+  std::set<std::pair<int, int>> seen;
+  for (const Segment& s : segments) {
+    const int u = vertex(s.a), v = vertex(s.b);
+    if (u == v || !seen.insert({std::min(u, v), std::max(u, v)}).second) continue;
+    plain.detected.push_back({u, v});
+  }
+  return plain;
+}
+
+class SegmentGraphReuse : public ::testing::TestWithParam<unsigned> {};
+
+// Segments on a coarse grid share and repeat endpoints and edges often; the graph numbers
+// vertices in order of first appearance, keeps the first of repeated segments, and a graph
+// rebuilt into a reused object equals a fresh one.
+TEST_P(SegmentGraphReuse, MatchesPlainNumberingAndReusedBuildsMatchFreshOnes) {
+  std::mt19937 rng(GetParam() * 7u + 3u);
+  std::uniform_int_distribution<int> grid(0, 6), count(0, 40);
+  SegmentGraph reused;
+  for (int frame = 0; frame < 3; ++frame) {
+    std::vector<Segment> segments(count(rng));
+    for (Segment& s : segments) {
+      s = {Point(10.0 * grid(rng), 10.0 * grid(rng)), Point(10.0 * grid(rng), 10.0 * grid(rng))};
+    }
+    const PlainVertices plain = plain_vertices(segments);
+    const SegmentGraph fresh = build_segment_graph(segments);
+    build_segment_graph(segments, &reused);
+    ASSERT_EQ(fresh.vertices, plain.vertices);
+    ASSERT_EQ(fresh.detected_edges.size(), plain.detected.size());
+    for (size_t k = 0; k < plain.detected.size(); ++k) {
+      const GraphEdge& e = fresh.edges[fresh.detected_edges[k]];
+      EXPECT_EQ(e.u, plain.detected[k].first);
+      EXPECT_EQ(e.v, plain.detected[k].second);
+      EXPECT_TRUE(e.detected);
+      EXPECT_EQ(e.weight, 0.0);
+    }
+    // No edge twice, and generated edges are exactly the non-detected ones.
+    std::set<std::pair<int, int>> pairs;
+    for (const GraphEdge& e : fresh.edges) {
+      EXPECT_TRUE(pairs.insert({std::min(e.u, e.v), std::max(e.u, e.v)}).second);
+      EXPECT_EQ(e.detected, e.weight == 0.0);
+    }
+    ASSERT_EQ(reused.vertices, fresh.vertices);
+    ASSERT_EQ(reused.edges.size(), fresh.edges.size());
+    for (size_t i = 0; i < fresh.edges.size(); ++i) {
+      EXPECT_EQ(reused.edges[i].u, fresh.edges[i].u);
+      EXPECT_EQ(reused.edges[i].v, fresh.edges[i].v);
+      EXPECT_EQ(reused.edges[i].weight, fresh.edges[i].weight);
+    }
+    EXPECT_EQ(reused.detected_edges, fresh.detected_edges);
+    EXPECT_EQ(reused.adjacency_begin, fresh.adjacency_begin);
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(Seeds, SegmentGraphReuse, ::testing::Range(0u, 100u));
+
 }  // namespace
 }  // namespace scbt
