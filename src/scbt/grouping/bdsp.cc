@@ -27,156 +27,81 @@ Polygon candidate_polygon(const SegmentGraph& graph, const CycleCandidate& candi
 namespace {
 
 constexpr int kUnreached = -2;
-constexpr int kInLevel = -3;  // heap position of a vertex waiting in the level list
-// Each vertex's arcs come in whole blocks of this many, so that the relaxation loop runs a fixed
-// number of times for most vertices (Delaunay degrees are mostly 4-7).
-constexpr int kArcBlock = 8;
 
-// Heap keys: (distance, vertex id) in one unsigned 128-bit integer, so that the order of
+// Frontier keys: (distance, vertex id) in one unsigned 128-bit integer, so that the order of
 // ShortestPaths (distance first, then id) is a single comparison. Distances are non-negative,
 // and the bits of non-negative doubles order as the doubles do.
-using HeapKey = unsigned __int128;
+using FrontierKey = unsigned __int128;
 
-HeapKey heap_key(double distance, int vertex) {
+FrontierKey frontier_key(double distance, int vertex) {
   uint64_t bits;
   std::memcpy(&bits, &distance, sizeof bits);
-  return (static_cast<HeapKey>(bits) << 32) | static_cast<uint32_t>(vertex);
+  return (static_cast<FrontierKey>(bits) << 32) | static_cast<uint32_t>(vertex);
 }
 
-int key_vertex(HeapKey key) { return static_cast<int>(static_cast<uint32_t>(key)); }
+int key_vertex(FrontierKey key) { return static_cast<int>(static_cast<uint32_t>(key)); }
 
 }  // namespace
 
-void CycleSearch::sift_up(int position) {
-  HeapKey* heap = heap_.data();
-  int* where = heap_position_.data();
-  const HeapKey key = heap[position];
-  while (position > 0) {
-    const int parent = (position - 1) / 4;
-    if (!(key < heap[parent])) break;
-    heap[position] = heap[parent];
-    where[key_vertex(heap[position])] = position;
-    position = parent;
-  }
-  heap[position] = key;
-  where[key_vertex(key)] = position;
-}
-
-void CycleSearch::sift_down(int position) {
-  HeapKey* heap = heap_.data();
-  int* where = heap_position_.data();
-  const int size = heap_size_;
-  const HeapKey key = heap[position];
-  for (;;) {
-    const int first = 4 * position + 1;
-    if (first >= size) break;
-    int best = first;
-    const int last = std::min(first + 4, size);
-    for (int c = first + 1; c < last; ++c) {
-      if (heap[c] < heap[best]) best = c;
-    }
-    if (!(heap[best] < key)) break;
-    heap[position] = heap[best];
-    where[key_vertex(heap[position])] = position;
-    position = best;
-  }
-  heap[position] = key;
-  where[key_vertex(key)] = position;
-}
-
-// The same relaxations in the same order as ShortestPaths::run, so the same distances (bit for
-// bit) and parents (ties included). The blocked edge's arcs weigh infinity meanwhile.
+// Settles vertices in the order ShortestPaths::run does ((distance, id), the only order of a
+// correct Dijkstra with that tie rule) and relaxes each vertex's arcs in the same order with the
+// same strict comparison, so the same distances (bit for bit) and parents (ties included). The
+// blocked edge's arcs weigh infinity meanwhile.
 int CycleSearch::shortest_paths(int tree, int source, int* parent) {
   const int n = num_vertices_;
   double* distance = distance_[tree].data();
   int* order = order_[tree].data();
-  std::fill(distance, distance + n + 1, std::numeric_limits<double>::infinity());
+  std::fill(distance, distance + n, std::numeric_limits<double>::infinity());
   std::fill(parent, parent + n, kUnreached);
 
   const Arc* arcs = arcs_.data();
   const int* begin = arc_begin_.data();
   const char* is_third = is_third_.data();
-  int* position = heap_position_.data();
-  HeapKey* heap = heap_.data();
+  int* position = frontier_position_.data();
+  FrontierKey* frontier = frontier_.data();
   distance[source] = 0.0;
   parent[source] = -1;
-  heap[0] = heap_key(0.0, source);
-  heap_size_ = 1;
+  frontier[0] = frontier_key(0.0, source);
   position[source] = 0;
   int settled = 0, thirds_left = num_thirds_;
-  // Vertices reached at exactly the distance of the vertex last settled (over zero-weight
-  // edges, mostly the other end of a detected segment) wait in `level` instead of the heap: they
-  // come next, before any heap entry but those of the same distance and a smaller id.
-  int* level = level_.data();
-  int* improved = improved_.data();
-  int level_size = 0;
-  while (heap_size_ > 0 || level_size > 0) {
-    int u;
-    if (level_size > 0) {
-      int best = 0;
-      for (int k = 1; k < level_size; ++k) {
-        if (level[k] < level[best]) best = k;
-      }
-      u = level[best];
-      if (heap_size_ > 0 && heap[0] < heap_key(distance[u], u)) {
-        u = -1;
-      } else {
-        level[best] = level[--level_size];
-        position[u] = -1;
-      }
-    } else {
-      u = -1;
+  int size = 1;
+  while (size > 0) {
+    // The frontier is small (about ten vertices on these graphs): an unordered array scanned
+    // for its least (distance, id) key beats a heap's unpredictable branches.
+    int best = 0;
+    FrontierKey least = frontier[0];
+    for (int k = 1; k < size; ++k) {
+      const bool less = frontier[k] < least;
+      least = less ? frontier[k] : least;
+      best = less ? k : best;
     }
-    if (u < 0) {
-      u = key_vertex(heap[0]);
-      position[u] = -1;
-      if (--heap_size_ > 0) {
-        heap[0] = heap[heap_size_];
-        sift_down(0);
-      }
-    }
+    const int u = key_vertex(least);
+    const FrontierKey moved = frontier[--size];
+    frontier[best] = moved;
+    position[key_vertex(moved)] = best;
+    position[u] = -1;
     order[settled++] = u;
     thirds_left -= is_third[u];
     if (thirds_left == 0) break;  // the rest is never used
     const double d = distance[u];
-    // First the distances, without a branch per arc (whether an arc improves is close to a coin
-    // toss); the improved neighbours are collected and then queued. A neighbour listed twice
-    // (parallel arcs) is queued twice, harmlessly: it ends with the smaller distance, parent u.
-    int num_improved = 0;
-    for (int k = begin[u]; k < begin[u + 1]; k += kArcBlock) {
-      for (int b = 0; b < kArcBlock; ++b) {  // padded with arcs that never improve
-        const double candidate = d + arcs[k + b].weight;
-        const int w = arcs[k + b].vertex;
-        const double old = distance[w];
-        const bool better = candidate < old;
-        distance[w] = better ? candidate : old;
-        improved[num_improved] = w;
-        num_improved += better;
-      }
-    }
-    for (int k = 0; k < num_improved; ++k) {
-      const int w = improved[k];
-      const double candidate = distance[w];
-      parent[w] = u;
-      if (position[w] == kInLevel) continue;  // listed twice
-      if (position[w] < 0) {
-        if (candidate == d) {
-          level[level_size++] = w;
-          position[w] = kInLevel;
-          continue;
-        }
-        heap[heap_size_] = heap_key(candidate, w);
-        sift_up(heap_size_++);
-      } else {
-        heap[position[w]] = heap_key(candidate, w);
-        sift_up(position[w]);
-      }
+    // Without a branch: whether an arc improves its end is close to a coin toss. A vertex not
+    // in the frontier goes in slot `size` (only kept if it improved).
+    for (int k = begin[u]; k < begin[u + 1]; ++k) {
+      const double candidate = d + arcs[k].weight;
+      const int w = arcs[k].vertex;
+      const double old = distance[w];
+      const bool better = candidate < old;
+      distance[w] = better ? candidate : old;
+      parent[w] = better ? u : parent[w];
+      const int at = position[w];
+      const int slot = at < 0 ? size : at;
+      const FrontierKey key = frontier_key(better ? candidate : old, w);
+      frontier[slot] = better ? key : frontier[slot];
+      position[w] = better ? slot : at;
+      size += better & (at < 0);
     }
   }
-  // Vertices left in the heap keep their tentative parent; no third vertex depends on them.
-  for (int k = 0; k < heap_size_; ++k) position[key_vertex(heap[k])] = -1;
-  for (int k = 0; k < level_size; ++k) position[level[k]] = -1;
-  heap_size_ = 0;
+  for (int k = 0; k < size; ++k) position[key_vertex(frontier[k])] = -1;
   return settled;
 }
 
@@ -264,18 +189,12 @@ void CycleSearch::run(const SegmentGraph& graph, const BdspOptions& options) {
   find_dominated_edges(graph, stride);
   arc_begin_.assign(n + 1, 0);
   arcs_.clear();
-  int max_degree = 0;
   for (int u = 0; u < n; ++u) {
     for (int k = graph.adjacency_begin[u]; k < graph.adjacency_begin[u + 1]; ++k) {
       const SegmentGraph::Incidence& in = graph.adjacency[k];
       if (!dominated_[in.edge]) arcs_.push_back({in.vertex, in.edge, graph.edges[in.edge].weight});
     }
-    // Pad to whole blocks with arcs to the spare vertex n, of infinite weight.
-    while (arcs_.size() % kArcBlock != 0) {
-      arcs_.push_back({n, -1, std::numeric_limits<double>::infinity()});
-    }
     arc_begin_[u + 1] = static_cast<int>(arcs_.size());
-    max_degree = std::max(max_degree, arc_begin_[u + 1] - arc_begin_[u]);
   }
   is_third_.assign(n, 0);
   num_thirds_ = 0;
@@ -287,7 +206,7 @@ void CycleSearch::run(const SegmentGraph& graph, const BdspOptions& options) {
     }
   }
   for (int tree = 0; tree < 2; ++tree) {
-    distance_[tree].resize(n + 1);  // n: the spare vertex of padding arcs
+    distance_[tree].resize(n);
     shoelace_[tree].resize(n);
     order_[tree].resize(n);
   }
@@ -296,10 +215,8 @@ void CycleSearch::run(const SegmentGraph& graph, const BdspOptions& options) {
   enter_.resize(n);
   next_.resize(n);
   size_.resize(n);
-  heap_position_.assign(n, -1);
-  heap_.resize(n + 1);
-  level_.resize(n + 1);
-  improved_.resize(max_degree + kArcBlock);
+  frontier_position_.assign(n, -1);
+  frontier_.resize(n + 1);
   meeting_seen_.assign(n, -1);
   const int num_seeds = num_detected > 0 ? (num_detected + stride - 1) / stride : 0;
   parents_.resize(static_cast<size_t>(2) * num_seeds * n);

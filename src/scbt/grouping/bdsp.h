@@ -71,8 +71,6 @@ class CycleSearch {
   // are settled. Returns the number of settled vertices.
   int shortest_paths(int tree, int source, int* parent);
   void find_dominated_edges(const SegmentGraph& graph, int stride);
-  void sift_up(int position);
-  void sift_down(int position);
 
   int num_vertices_ = 0;
   std::vector<Point> points_;  // vertex positions relative to the current seed's s1
@@ -94,12 +92,10 @@ class CycleSearch {
   // Far above the rounding error of any path length (a fraction 1e-9 of all weights).
   double tolerance_ = 0.0;
   std::vector<int> meeting_seen_;
-  // Indexed 4-ary heap of (distance, vertex) keys with decrease-key, ordered as ShortestPaths
-  // orders it.
-  std::vector<unsigned __int128> heap_;
-  int heap_size_ = 0;
-  std::vector<int> level_, improved_;
-  std::vector<int> heap_position_;
+  // Dijkstra's frontier: (distance, vertex id) keys, unordered; frontier_position_[v] is v's
+  // slot or -1. One spare slot past the end.
+  std::vector<unsigned __int128> frontier_;
+  std::vector<int> frontier_position_;
   std::vector<std::pair<int, double>> blocked_;  // arcs of the seed edge and their weights
   // Parent vertex per tree per seed: parents_[(2 * slot + tree) * n + v]; -1 for the root,
   // -2 where not settled.
