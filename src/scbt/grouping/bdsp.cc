@@ -8,6 +8,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "scbt/grouping/bdsp_generic.h"
+
 namespace scbt {
 
 void BdspOptions::check() const {
@@ -364,6 +366,7 @@ CycleCandidate CycleSearch::candidate(int k) const {
 
 std::vector<CycleCandidate> search_cycle_candidates(const SegmentGraph& graph,
                                                     const BdspOptions& options) {
+  if (options.generic_graph) return search_cycle_candidates_generic(graph, options);
   thread_local CycleSearch search;
   search.run(graph, options);
   std::vector<CycleCandidate> candidates(search.size());

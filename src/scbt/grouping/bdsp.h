@@ -38,17 +38,25 @@ struct CandidateSummary {
 
 // The BDSP search of search_cycle_candidates, without materialising candidates: each candidate
 // is a summary (gap, area, seed) plus the meeting vertex of its two shortest paths, and the
-// search keeps each seed's two shortest-path trees so that the vertices of any candidate can be
-// listed afterwards. The area comes from root-to-vertex sums of shoelace terms along each tree.
-// Dijkstra stops once every third vertex is settled (the rest of the tree is never used).
-// All buffers are reused across calls: no allocation in steady state. Not thread-safe; use one
-// object per thread.
+// search keeps each seed's two shortest-path trees (parent arrays) so that the vertices of any
+// candidate can be listed afterwards. What makes it fast, each tested against the
+// straightforward search candidate for candidate:
+//  - the area comes from root-to-vertex sums of shoelace terms along each tree, not a walk;
+//  - the meeting vertex is where the two trees' parents first differ up from the third vertex
+//    (precomputed per seed), plus a walk above it cut short by a bound on d1 - d2 (the paths can
+//    meet again only where rounded path lengths tie differently from the two roots);
+//  - Dijkstra keeps its frontier (about ten vertices) as an unordered array of 128-bit
+//    (distance, id) keys scanned for the least, stops once every third vertex is settled, and
+//    skips edges that a strictly shorter two-edge detour makes useless to every search;
+//  - nothing is allocated once the buffers have grown to the graph's size.
+// options.generic_graph is ignored here. Not thread-safe; use one object per thread.
 class CycleSearch {
  public:
   // Throws std::invalid_argument for bad options (BdspOptions::check).
   void run(const SegmentGraph& graph, const BdspOptions& options = {});
 
-  // Same candidates in the same order as search_cycle_candidates, with bit-identical gaps.
+  // The candidates of search_cycle_candidates, in the same order, with bit-identical gaps and
+  // areas equal to ~1e-9 relative (summed in another order).
   const std::vector<CandidateSummary>& candidates() const { return candidates_; }
   int size() const { return static_cast<int>(candidates_.size()); }
   // Candidate k's cycle (graph vertex ids; the cycle closes back to front), into *out.
@@ -110,8 +118,9 @@ class CycleSearch {
 // through its first endpoint v_j. Where the two paths merge before v_j, the shared tail is cut
 // off so that every candidate is a cycle that visits each vertex once. A third vertex whose paths
 // meet where an earlier one's did (same cycle) is skipped, as are cycles of fewer than three
-// vertices; other repeats of a cycle can remain (they carry identical gap and area, so they never
-// change the choice).
+// vertices; other repeats of a cycle can remain (they carry identical gap and, up to rounding,
+// area). Runs CycleSearch (one per thread) and materialises every candidate, or, when
+// options.generic_graph is set, search_cycle_candidates_generic.
 std::vector<CycleCandidate> search_cycle_candidates(const SegmentGraph& graph,
                                                     const BdspOptions& options = {});
 

@@ -183,6 +183,51 @@ TEST(CycleSearch, MatchesReferenceOnReusedBuffers) {
   }
 }
 
+// Random multigraphs whose weights are decimal fractions (0.1 + 0.2 != 0.3 in doubles): path
+// lengths that tie in exact arithmetic may or may not tie once rounded, differently from each
+// root, which is where the two trees can part and meet again.
+SegmentGraph rounding_graph(std::mt19937& rng, int n, int m) {
+  SegmentGraph graph;
+  std::uniform_real_distribution<double> pos(0.0, 100.0);
+  std::uniform_int_distribution<int> vertex(0, n - 1), coin(0, 3), tenths(1, 7);
+  for (int i = 0; i < n; ++i) graph.vertices.emplace_back(pos(rng), pos(rng));
+  for (int i = 0; i < m; ++i) {
+    GraphEdge e;
+    e.u = vertex(rng);
+    do {
+      e.v = vertex(rng);
+    } while (e.v == e.u);
+    e.detected = coin(rng) == 0;
+    e.weight = e.detected ? 0.0 : 0.1 * tenths(rng);
+    e.length = e.weight;
+    if (e.detected) graph.detected_edges.push_back(i);
+    graph.edges.push_back(e);
+  }
+  build_adjacency(&graph);
+  return graph;
+}
+
+TEST(CycleSearch, MatchesReferenceWithRoundedTies) {
+  CycleSearch search;
+  std::vector<int> cycle;
+  for (unsigned trial = 0; trial < 400; ++trial) {
+    std::mt19937 rng(trial * 977u + 3u);
+    const int n = std::uniform_int_distribution<int>(3, 40)(rng);
+    const SegmentGraph graph =
+        rounding_graph(rng, n, std::uniform_int_distribution<int>(n, 3 * n)(rng));
+    BdspOptions options;
+    options.seed_stride = std::uniform_int_distribution<int>(1, 2)(rng);
+    const std::vector<CycleCandidate> expected = reference_candidates(graph, options.seed_stride);
+    search.run(graph, options);
+    ASSERT_EQ(search.size(), static_cast<int>(expected.size())) << "trial " << trial;
+    for (int k = 0; k < search.size(); ++k) {
+      EXPECT_EQ(search.candidates()[k].gap_length, expected[k].gap_length) << trial << " " << k;
+      search.vertices(k, &cycle);
+      EXPECT_EQ(cycle, expected[k].vertices) << trial << " " << k;
+    }
+  }
+}
+
 TEST(CycleSearch, RejectsBadStrideAndIndex) {
   BdspOptions options;
   options.seed_stride = 0;
