@@ -126,6 +126,21 @@ TEST_P(BdspGenericAnyGraph, SameLeastAdmissibleCost) {
 
 INSTANTIATE_TEST_SUITE_P(Seeds, BdspGenericAnyGraph, ::testing::Range(0u, 60u));
 
+TEST(BdspGeneric, SearchCycleCandidatesRunsItWhenAsked) {
+  std::mt19937 rng(5);
+  const SegmentGraph graph = build_segment_graph(random_segments(rng, 40, true));
+  BdspOptions options;
+  options.generic_graph = true;
+  const std::vector<CycleCandidate> expected = search_cycle_candidates_generic(graph, options);
+  const std::vector<CycleCandidate> got = search_cycle_candidates(graph, options);
+  ASSERT_FALSE(expected.empty());
+  ASSERT_EQ(got.size(), expected.size());
+  for (size_t k = 0; k < got.size(); ++k) {
+    EXPECT_EQ(got[k].vertices, expected[k].vertices) << k;
+    EXPECT_EQ(got[k].area, expected[k].area) << k;  // walked: bit-identical
+  }
+}
+
 TEST(BdspGeneric, RejectsBadStride) {
   BdspOptions options;
   options.seed_stride = 0;
