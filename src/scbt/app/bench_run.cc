@@ -147,6 +147,7 @@ BenchReport run_bench(const BenchRunOptions& options, std::ostream& log) {
     if (options.compare) {
       TrackerOptions plain = options.tracker;
       plain.detector.crop_to_boundary = false;
+      plain.bdsp.generic_graph = true;
       runs.push_back(make_samples("straightforward", plain));
     }
 

@@ -1,6 +1,7 @@
 // The body of `scbt bench`: time the tracker stage by stage on the dataset, in the optimised
-// configuration and in the straightforward one (whole-frame line detection), side by side in the
-// same run, and score both against the ground truth.
+// configuration and in the straightforward one (whole-frame line detection, BDSP on a generic
+// graph: Boost.Graph's Dijkstra with every candidate materialised), side by side in the same run,
+// and score both against the ground truth.
 #pragma once
 
 #include <ostream>

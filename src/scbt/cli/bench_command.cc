@@ -13,7 +13,8 @@ void add_bench_command(CLI::App& app, int* exit_code) {
   CLI::App* command = app.add_subcommand(
       "bench",
       "Time every stage per sequence (median/p90/p99, fps, peak RSS) and the speed-up against "
-      "whole-frame detection measured in the same run; run it pinned: taskset -c 0 scbt bench");
+      "the straightforward configuration (whole-frame detection, generic graph) measured in the "
+      "same run; run it pinned: taskset -c 0 scbt bench");
   command->add_option("--dataset", options->dataset, "Dataset folder")->required();
   command->add_option("--sequences", options->sequences, "Only these sequences (default: all)");
   command->add_option("--max-frames", options->max_frames,
@@ -22,7 +23,7 @@ void add_bench_command(CLI::App& app, int* exit_code) {
   command->add_flag("--full-frame", *full_frame,
                     "Detect lines on the whole frame in the configuration under test too");
   command->add_flag("--no-compare", *no_compare,
-                    "Skip the straightforward (whole-frame) configuration");
+                    "Skip the straightforward (whole-frame, generic-graph) configuration");
   command
       ->add_option("--roi-padding", options->tracker.detector.roi_padding,
                    "Pixels added around the filter band of the detection window")

@@ -8,6 +8,7 @@
 
 #include "scbt/geometry/polygon_io.h"
 #include "scbt/grouping/bdsp.h"
+#include "scbt/grouping/bdsp_generic.h"
 #include "scbt/grouping/boundary_choice.h"
 #include "scbt/grouping/segment_filter.h"
 #include "scbt/lines/line_detector.h"
@@ -75,20 +76,41 @@ void Tracker::init(const cv::Mat& frame, const Polygon& polygon) {
   frame_size_ = frame.size();
 }
 
-Tracker::Attempt Tracker::attempt(const cv::Mat& frame, const Polygon& prior) {
-  Attempt a;
+int Tracker::Attempt::num_candidates() const {
+  return generic ? static_cast<int>(materialised.size()) : search.size();
+}
+
+Polygon Tracker::Attempt::chosen_polygon() const {
+  if (generic) return candidate_polygon(graph, materialised[choice->index]);
+  thread_local std::vector<int> cycle;
+  search.vertices(choice->index, &cycle);
+  Polygon polygon;
+  polygon.reserve(cycle.size());
+  for (int v : cycle) polygon.push_back(graph.vertices[v]);
+  return polygon;
+}
+
+double Tracker::Attempt::chosen_area() const {
+  return generic ? materialised[choice->index].area : search.candidates()[choice->index].area;
+}
+
+void Tracker::attempt(const cv::Mat& frame, const Polygon& prior, Attempt* a) {
+  a->num_dropped = 0;
+  a->choice.reset();
+  a->materialised.clear();
+  a->generic = options_.bdsp.generic_graph;
   const Clock::time_point line_start = Clock::now();
   // Only segments near the prior boundary can survive the distance filter, so only the window
   // around it is converted and searched (crop_to_boundary; whole frame otherwise).
-  a.roi = cv::Rect(cv::Point(0, 0), frame_size_);
+  a->roi = cv::Rect(cv::Point(0, 0), frame_size_);
   if (options_.detector.crop_to_boundary) {
-    a.roi =
+    a->roi =
         detection_roi(prior, options_.filter_distance + options_.detector.roi_padding, frame_size_);
-    if (a.roi.empty()) a.roi = cv::Rect(cv::Point(0, 0), frame_size_);
+    if (a->roi.empty()) a->roi = cv::Rect(cv::Point(0, 0), frame_size_);
   }
-  to_gray(frame(a.roi), &gray_);
-  a.detected = detector_->detect_in(gray_, a.roi.tl(), frame_size_);
-  a.line_ms = elapsed_ms(line_start);
+  to_gray(frame(a->roi), &gray_);
+  a->detected = detector_->detect_in(gray_, a->roi.tl(), frame_size_);
+  a->line_ms = elapsed_ms(line_start);
 
   Clock::time_point stage_start = Clock::now();
   // Ends the stage that began at stage_start, returning its time, and starts the next.
@@ -98,25 +120,36 @@ Tracker::Attempt Tracker::attempt(const cv::Mat& frame, const Polygon& prior) {
     stage_start = now;
     return ms;
   };
-  a.kept = filter_segments_near_boundary(a.detected, prior, options_.filter_distance);
-  if (static_cast<int>(a.kept.size()) > options_.max_segments) {
-    a.num_dropped = static_cast<int>(a.kept.size()) - options_.max_segments;
-    std::nth_element(a.kept.begin(), a.kept.begin() + options_.max_segments, a.kept.end(),
+  a->kept = filter_segments_near_boundary(a->detected, prior, options_.filter_distance);
+  if (static_cast<int>(a->kept.size()) > options_.max_segments) {
+    a->num_dropped = static_cast<int>(a->kept.size()) - options_.max_segments;
+    std::nth_element(a->kept.begin(), a->kept.begin() + options_.max_segments, a->kept.end(),
                      [](const Segment& l, const Segment& r) { return l.length() > r.length(); });
-    a.kept.resize(options_.max_segments);
+    a->kept.resize(options_.max_segments);
   }
-  a.stages.filter_ms = lap();
-  a.graph = build_segment_graph(a.kept);
-  a.stages.graph_ms = lap();
-  a.candidates = search_cycle_candidates(a.graph, options_.bdsp);
-  a.stages.search_ms = lap();
-  a.choice = chooser_.choose(
-      a.candidates,
-      [&](int index, std::vector<int>* cycle) { *cycle = a.candidates[index].vertices; }, a.graph,
-      prior, options_.min_area_similarity, options_.cost_tolerance);
-  a.stages.choice_ms = lap();
-  a.grouping_ms = a.stages.filter_ms + a.stages.graph_ms + a.stages.search_ms + a.stages.choice_ms;
-  return a;
+  a->stages.filter_ms = lap();
+  build_segment_graph(a->kept, &a->graph);
+  a->stages.graph_ms = lap();
+  if (a->generic) {
+    a->materialised = search_cycle_candidates_generic(a->graph, options_.bdsp);
+  } else {
+    a->search.run(a->graph, options_.bdsp);
+  }
+  a->stages.search_ms = lap();
+  if (a->generic) {
+    a->choice = chooser_.choose(
+        a->materialised,
+        [&](int index, std::vector<int>* cycle) { *cycle = a->materialised[index].vertices; },
+        a->graph, prior, options_.min_area_similarity, options_.cost_tolerance);
+  } else {
+    a->choice = chooser_.choose(
+        a->search.candidates(),
+        [&](int index, std::vector<int>* cycle) { a->search.vertices(index, cycle); }, a->graph,
+        prior, options_.min_area_similarity, options_.cost_tolerance);
+  }
+  a->stages.choice_ms = lap();
+  a->grouping_ms =
+      a->stages.filter_ms + a->stages.graph_ms + a->stages.search_ms + a->stages.choice_ms;
 }
 
 TrackResult Tracker::track(const cv::Mat& frame) {
@@ -128,14 +161,15 @@ TrackResult Tracker::track(const cv::Mat& frame) {
                                 std::to_string(frame.cols) + "x" + std::to_string(frame.rows));
   }
   TrackResult result;
-  Attempt a = attempt(frame, boundary_);
-  result.line_ms = a.line_ms;
-  result.grouping_ms = a.grouping_ms;
-  result.stages = a.stages;
+  Attempt* a = &attempts_[0];
+  attempt(frame, boundary_, a);
+  result.line_ms = a->line_ms;
+  result.grouping_ms = a->grouping_ms;
+  result.stages = a->stages;
 
   // Lost: the boundary may have moved out of the search band (fast motion, camera swing).
   // Estimate how the content around it moved since it was last tracked, and search again there.
-  if (!a.choice && options_.recover_by_motion && !reference_gray_.empty()) {
+  if (!a->choice && options_.recover_by_motion && !reference_gray_.empty()) {
     const Clock::time_point recover_start = Clock::now();
     cv::Mat current;
     to_gray(frame(reference_roi_), &current);
@@ -148,27 +182,28 @@ TrackResult Tracker::track(const cv::Mat& frame) {
     if (motion && cv::norm(motion->shift) >= 0.5 * options_.filter_distance) {
       Polygon moved = boundary_;
       for (Point& p : moved) p += motion->shift;
-      Attempt retry = attempt(frame, moved);
-      result.line_ms += retry.line_ms;
-      result.grouping_ms += retry.grouping_ms;
-      result.stages.filter_ms += retry.stages.filter_ms;
-      result.stages.graph_ms += retry.stages.graph_ms;
-      result.stages.search_ms += retry.stages.search_ms;
-      result.stages.choice_ms += retry.stages.choice_ms;
-      if (retry.choice) {
-        a = std::move(retry);
+      Attempt* retry = &attempts_[1];
+      attempt(frame, moved, retry);
+      result.line_ms += retry->line_ms;
+      result.grouping_ms += retry->grouping_ms;
+      result.stages.filter_ms += retry->stages.filter_ms;
+      result.stages.graph_ms += retry->stages.graph_ms;
+      result.stages.search_ms += retry->stages.search_ms;
+      result.stages.choice_ms += retry->stages.choice_ms;
+      if (retry->choice) {
+        a = retry;
         result.recovered = true;
       }
     }
   }
 
-  if (a.choice) {
-    boundary_ = candidate_polygon(a.graph, a.candidates[a.choice->index]);
-    boundary_area_ = a.candidates[a.choice->index].area;
-    result.cost = a.choice->cost;
-    result.area_similarity = a.choice->similarity;
+  if (a->choice) {
+    boundary_ = a->chosen_polygon();
+    boundary_area_ = a->chosen_area();
+    result.cost = a->choice->cost;
+    result.area_similarity = a->choice->similarity;
     if (options_.recover_by_motion) {
-      reference_roi_ = a.roi;
+      reference_roi_ = a->roi;
       // A deep copy (grey input is a view of the caller's frame) into the reused buffer.
       gray_.copyTo(reference_gray_);
     }
@@ -177,15 +212,15 @@ TrackResult Tracker::track(const cv::Mat& frame) {
   }
 
   result.boundary = boundary_;
-  result.num_detected = static_cast<int>(a.detected.size());
-  result.num_kept = static_cast<int>(a.kept.size());
-  result.num_dropped = a.num_dropped;
-  result.num_vertices = a.graph.num_vertices();
-  result.num_edges = a.graph.num_edges();
-  result.num_candidates = static_cast<int>(a.candidates.size());
+  result.num_detected = static_cast<int>(a->detected.size());
+  result.num_kept = static_cast<int>(a->kept.size());
+  result.num_dropped = a->num_dropped;
+  result.num_vertices = a->graph.num_vertices();
+  result.num_edges = a->graph.num_edges();
+  result.num_candidates = a->num_candidates();
   if (keep_debug_) {
-    debug_.detected = std::move(a.detected);
-    debug_.graph = std::move(a.graph);
+    debug_.detected = a->detected;
+    debug_.graph = a->graph;
   }
   return result;
 }

@@ -80,20 +80,29 @@ class Tracker {
   cv::Mat reference_gray_;
   cv::Rect reference_roi_;
 
-  // One pass of the per-frame pipeline searching around `prior`.
+  // One pass of the per-frame pipeline searching around `prior`. Two are kept (the first try
+  // and a recovery search) and reused frame to frame, so that steady-state tracking allocates
+  // next to nothing.
   struct Attempt {
     cv::Rect roi;
     std::vector<Segment> detected;
     std::vector<Segment> kept;
     int num_dropped = 0;
     SegmentGraph graph;
-    std::vector<CycleCandidate> candidates;
+    CycleSearch search;                        // the candidates (BdspOptions::generic_graph off)
+    std::vector<CycleCandidate> materialised;  // the candidates of the generic-graph baseline
+    bool generic = false;                      // materialised holds the candidates
     std::optional<BoundaryChoice> choice;
     double line_ms = 0.0;
     double grouping_ms = 0.0;
     StageTimes stages;
+
+    int num_candidates() const;
+    Polygon chosen_polygon() const;  // requires choice
+    double chosen_area() const;
   };
-  Attempt attempt(const cv::Mat& frame, const Polygon& prior);
+  void attempt(const cv::Mat& frame, const Polygon& prior, Attempt* a);
+  Attempt attempts_[2];
   StableChooser chooser_;  // its buffers and distance cache are reused frame to frame
   bool keep_debug_ = false;
   TrackDebug debug_;
