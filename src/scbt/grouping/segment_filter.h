@@ -14,5 +14,8 @@ double mean_distance_to_boundary(const Segment& segment, const Polygon& boundary
 std::vector<Segment> filter_segments_near_boundary(const std::vector<Segment>& segments,
                                                    const Polygon& boundary,
                                                    double max_mean_distance);
+// The same into *kept (its buffer reused).
+void filter_segments_near_boundary(const std::vector<Segment>& segments, const Polygon& boundary,
+                                   double max_mean_distance, std::vector<Segment>* kept);
 
 }  // namespace scbt

@@ -120,7 +120,7 @@ void Tracker::attempt(const cv::Mat& frame, const Polygon& prior, Attempt* a) {
     stage_start = now;
     return ms;
   };
-  a->kept = filter_segments_near_boundary(a->detected, prior, options_.filter_distance);
+  filter_segments_near_boundary(a->detected, prior, options_.filter_distance, &a->kept);
   if (static_cast<int>(a->kept.size()) > options_.max_segments) {
     a->num_dropped = static_cast<int>(a->kept.size()) - options_.max_segments;
     std::nth_element(a->kept.begin(), a->kept.begin() + options_.max_segments, a->kept.end(),
