@@ -7,6 +7,8 @@
 #include <opencv2/ximgproc/fast_line_detector.hpp>
 #include <stdexcept>
 
+#include "scbt/lines/edlines.h"
+
 namespace scbt {
 namespace {
 
@@ -17,9 +19,56 @@ std::vector<Segment> to_segments(const std::vector<cv::Vec4f>& lines) {
   return segments;
 }
 
-class EdLinesDetector : public LineDetector {
+// Our EDLines; detect_near restricts the edges to the band around the boundary.
+class OwnEdLinesDetector : public LineDetector {
  public:
-  explicit EdLinesDetector(const LineDetectorOptions& options)
+  explicit OwnEdLinesDetector(const LineDetectorOptions& options) : edlines_(to_params(options)) {}
+
+  std::vector<Segment> detect(const cv::Mat& gray) override {
+    std::vector<Segment> segments;
+    edlines_.detect(gray, cv::Point(0, 0), gray.size(), cv::Mat(), &segments);
+    return segments;
+  }
+
+  std::vector<Segment> detect_in(const cv::Mat& crop, cv::Point offset,
+                                 cv::Size full_size) override {
+    std::vector<Segment> segments;
+    edlines_.detect(crop, offset, full_size, cv::Mat(), &segments);
+    return segments;
+  }
+
+  std::vector<Segment> detect_near(const cv::Mat& crop, cv::Point offset, cv::Size full_size,
+                                   const Polygon& boundary, double radius) override {
+    if (boundary.empty() || !(radius > 0.0) || !std::isfinite(radius)) {
+      return detect_in(crop, offset, full_size);
+    }
+    draw_band_mask(boundary, offset, radius, crop.size(), &band_);
+    std::vector<Segment> segments;
+    edlines_.detect(crop, offset, full_size, band_, &segments);
+    return segments;
+  }
+
+ private:
+  static EdLinesParams to_params(const LineDetectorOptions& options) {
+    EdLinesParams params;
+    params.gradient_threshold = options.gradient_threshold;
+    params.anchor_threshold = options.anchor_threshold;
+    params.scan_interval = options.scan_interval;
+    params.sigma = options.sigma;
+    params.min_line_length =
+        options.min_line_length > 0 ? static_cast<int>(std::ceil(options.min_line_length)) : -1;
+    params.line_fit_error = options.line_fit_error;
+    return params;
+  }
+
+  EdLines edlines_;
+  cv::Mat band_;
+};
+
+// OpenCV ximgproc's EdgeDrawing (EDLines), with a guard against its heap overflow.
+class OpenCvEdLinesDetector : public LineDetector {
+ public:
+  explicit OpenCvEdLinesDetector(const LineDetectorOptions& options)
       : detector_(cv::ximgproc::createEdgeDrawing()) {
     cv::ximgproc::EdgeDrawing::Params params;
     params.EdgeDetectionOperator = cv::ximgproc::EdgeDrawing::SOBEL;
@@ -143,6 +192,12 @@ class FastLineDetectorAdapter : public LineDetector {
 
 }  // namespace
 
+std::vector<Segment> LineDetector::detect_near(const cv::Mat& crop, cv::Point offset,
+                                               cv::Size full_size, const Polygon& /*boundary*/,
+                                               double /*radius*/) {
+  return detect_in(crop, offset, full_size);
+}
+
 std::vector<Segment> LineDetector::detect_in(const cv::Mat& crop, cv::Point offset,
                                              cv::Size /*full_size*/) {
   std::vector<Segment> segments = detect(crop.isContinuous() ? crop : crop.clone());
@@ -183,16 +238,20 @@ int edlines_auto_min_line_length(cv::Size size) {
 }
 
 LineDetectorKind parse_line_detector_kind(const std::string& name) {
-  if (name == "edlines") return LineDetectorKind::kEdLines;
+  if (name == "edlines" || name == "opencv-edlines") return LineDetectorKind::kEdLines;
+  if (name == "scbt-edlines") return LineDetectorKind::kScbtEdLines;
   if (name == "lsd") return LineDetectorKind::kLsd;
   if (name == "fld") return LineDetectorKind::kFastLineDetector;
-  throw std::invalid_argument("unknown line detector '" + name + "' (use edlines, lsd or fld)");
+  throw std::invalid_argument("unknown line detector '" + name +
+                              "' (use edlines, scbt-edlines, lsd or fld)");
 }
 
 std::string to_string(LineDetectorKind kind) {
   switch (kind) {
     case LineDetectorKind::kEdLines:
       return "edlines";
+    case LineDetectorKind::kScbtEdLines:
+      return "scbt-edlines";
     case LineDetectorKind::kLsd:
       return "lsd";
     case LineDetectorKind::kFastLineDetector:
@@ -234,7 +293,9 @@ std::unique_ptr<LineDetector> make_line_detector(const LineDetectorOptions& opti
   options.check();
   switch (options.kind) {
     case LineDetectorKind::kEdLines:
-      return std::make_unique<EdLinesDetector>(options);
+      return std::make_unique<OpenCvEdLinesDetector>(options);
+    case LineDetectorKind::kScbtEdLines:
+      return std::make_unique<OwnEdLinesDetector>(options);
     case LineDetectorKind::kLsd:
       return std::make_unique<LsdDetector>(options);
     case LineDetectorKind::kFastLineDetector:

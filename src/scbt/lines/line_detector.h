@@ -1,5 +1,6 @@
 // Straight line segment detection behind one small interface, so that EDLines (the paper's
-// choice), LSD and the FastLineDetector can be swapped with an option.
+// choice: OpenCV's EdgeDrawing, or our own implementation as "scbt-edlines"), LSD and the
+// FastLineDetector can be swapped with an option.
 #pragma once
 
 #include <memory>
@@ -11,25 +12,35 @@
 
 namespace scbt {
 
-enum class LineDetectorKind { kEdLines, kLsd, kFastLineDetector };
+enum class LineDetectorKind {
+  // "edlines" (also "opencv-edlines"): OpenCV ximgproc's EdgeDrawing (EDLines), guarded against its
+  // heap overflow. The default.
+  kEdLines,
+  // "scbt-edlines": our own EDLines (scbt/lines/edlines.h): the same algorithm and parameters,
+  // about 3x faster, no overflow, and detect_near looks only at the band around a boundary.
+  kScbtEdLines,
+  kLsd,               // "lsd": OpenCV's LSD
+  kFastLineDetector,  // "fld": OpenCV ximgproc's FastLineDetector
+};
 
-// Parses "edlines", "lsd" or "fld"; throws std::invalid_argument otherwise.
+// Parses "edlines", "opencv-edlines" (the same), "scbt-edlines", "lsd" or "fld"; throws
+// std::invalid_argument otherwise.
 LineDetectorKind parse_line_detector_kind(const std::string& name);
 std::string to_string(LineDetectorKind kind);
 
 struct LineDetectorOptions {
   LineDetectorKind kind = LineDetectorKind::kEdLines;
-  // EDLines settings, from Akinlar & Topal's original EDLines: Sobel gradients, gradient
-  // threshold 36, anchor threshold 8, anchors scanned on every row.
+  // EDLines settings (edlines and scbt-edlines), from Akinlar & Topal's original EDLines: Sobel
+  // gradients, gradient threshold 36, anchor threshold 8, anchors scanned on every row.
   int gradient_threshold = 36;
   int anchor_threshold = 8;
   int scan_interval = 1;
   // Gaussian smoothing before gradients (EDLines uses sigma 1).
   double sigma = 1.0;
   // Segments shorter than this (pixels) are dropped; <= 0 lets EDLines derive it from the image
-  // size as in the original paper.
+  // size as in the original paper (EDLines' reference code and OpenCV never go below 9).
   double min_line_length = -1.0;
-  // Maximum mean squared distance of an edge pixel to its fitted line (pixels^2).
+  // EDLines: how far (pixels) an edge pixel may be from the line it extends.
   double line_fit_error = 1.0;
   // Tracking detects only inside the previous boundary's bounding box grown by the filter
   // distance plus `roi_padding` pixels, instead of on the whole frame (EDLines' 5x5 Gaussian and
@@ -53,6 +64,14 @@ class LineDetector {
   // size), and returns segments in the whole image's coordinates. `crop` may be a non-contiguous
   // view. The default shifts the result of detect().
   virtual std::vector<Segment> detect_in(const cv::Mat& crop, cv::Point offset, cv::Size full_size);
+  // As detect_in, but only segments near `boundary` (a closed polygon in the whole image's
+  // coordinates) are needed: a detector may look only at the pixels within `radius` of it, so
+  // that segments farther away may be missing (and segments crossing the band's edge may be cut
+  // there). The default ignores the band and calls detect_in; "scbt-edlines" restricts its edges
+  // to the band. An empty boundary or a radius that is not positive and finite means no band.
+  virtual std::vector<Segment> detect_near(const cv::Mat& crop, cv::Point offset,
+                                           cv::Size full_size, const Polygon& boundary,
+                                           double radius);
 };
 
 // The part of a `frame_size` image within `margin` pixels of the polygon's bounding box (whole

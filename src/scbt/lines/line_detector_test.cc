@@ -79,18 +79,20 @@ TEST_P(LineDetectorFindsRectangle, EachSideMatchedBySegment) {
 
 INSTANTIATE_TEST_SUITE_P(Kinds, LineDetectorFindsRectangle,
                          ::testing::Combine(::testing::Values(LineDetectorKind::kEdLines,
+                                                              LineDetectorKind::kScbtEdLines,
                                                               LineDetectorKind::kLsd,
                                                               LineDetectorKind::kFastLineDetector),
                                             ::testing::Range(0u, 10u)),
                          [](const auto& info) {
-                           return to_string(std::get<0>(info.param)) + "_" +
-                                  std::to_string(std::get<1>(info.param));
+                           std::string name = to_string(std::get<0>(info.param));
+                           std::replace(name.begin(), name.end(), '-', '_');
+                           return name + "_" + std::to_string(std::get<1>(info.param));
                          });
 
 TEST(LineDetector, BlankImageHasNoSegments) {
   const cv::Mat blank(120, 160, CV_8UC1, cv::Scalar(128));
-  for (LineDetectorKind kind :
-       {LineDetectorKind::kEdLines, LineDetectorKind::kLsd, LineDetectorKind::kFastLineDetector}) {
+  for (LineDetectorKind kind : {LineDetectorKind::kEdLines, LineDetectorKind::kScbtEdLines,
+                                LineDetectorKind::kLsd, LineDetectorKind::kFastLineDetector}) {
     LineDetectorOptions options;
     options.kind = kind;
     EXPECT_TRUE(make_line_detector(options)->detect(blank).empty()) << to_string(kind);
@@ -112,11 +114,13 @@ TEST(LineDetector, ConvenienceAcceptsColourAndMinLengthFilters) {
 }
 
 TEST(LineDetectorKindNames, RoundTripAndUnknown) {
-  for (LineDetectorKind kind :
-       {LineDetectorKind::kEdLines, LineDetectorKind::kLsd, LineDetectorKind::kFastLineDetector}) {
+  for (LineDetectorKind kind : {LineDetectorKind::kEdLines, LineDetectorKind::kScbtEdLines,
+                                LineDetectorKind::kLsd, LineDetectorKind::kFastLineDetector}) {
     EXPECT_EQ(parse_line_detector_kind(to_string(kind)), kind);
   }
   EXPECT_EQ(to_string(LineDetectorKind::kEdLines), "edlines");
+  EXPECT_EQ(to_string(LineDetectorKind::kScbtEdLines), "scbt-edlines");
+  EXPECT_EQ(parse_line_detector_kind("opencv-edlines"), LineDetectorKind::kEdLines);
   EXPECT_EQ(to_string(LineDetectorKind::kLsd), "lsd");
   EXPECT_EQ(to_string(LineDetectorKind::kFastLineDetector), "fld");
   for (const std::string bad : {"", "EDLINES", "hough", "lsd "}) {
@@ -208,8 +212,8 @@ TEST(LineDetectorDetectIn, WindowMatchesWholeFrame) {
     cv::Mat image(480, 640, CV_8UC1, cv::Scalar(60));
     cv::rectangle(image, rect, cv::Scalar(200), cv::FILLED);
     cv::line(image, {0, 470}, {630, 10}, cv::Scalar(140), 3);  // a distractor crossing the frame
-    for (LineDetectorKind kind : {LineDetectorKind::kEdLines, LineDetectorKind::kLsd,
-                                  LineDetectorKind::kFastLineDetector}) {
+    for (LineDetectorKind kind : {LineDetectorKind::kEdLines, LineDetectorKind::kScbtEdLines,
+                                  LineDetectorKind::kLsd, LineDetectorKind::kFastLineDetector}) {
       LineDetectorOptions options;
       options.kind = kind;
       std::unique_ptr<LineDetector> detector = make_line_detector(options);
