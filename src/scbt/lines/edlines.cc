@@ -27,6 +27,7 @@ constexpr int kAcceptWithoutTest = 80;    // lines of this many pixels are valid
 constexpr int kRectTestUpTo = 25;         // lines up to this many pixels: rectangle test only
 // cos(22.5 deg): a pixel is aligned when its level line is within 22.5 degrees of the line.
 const double kAlignedCos = std::cos(22.5 * M_PI / 180.0);
+const double kAlignedCos2 = kAlignedCos * kAlignedCos;
 constexpr double kAlignedProbability = 0.125;
 
 bool adjacent(int p, int q, int width) {
@@ -220,13 +221,19 @@ void EdLines::find_anchors() {
       const std::uint16_t* up = g - w;
       const std::uint16_t* down = g + w;
       for (int c = 2; c < w - 2; ++c) {
-        const bool vertical = d[c] == kVertical;
         const std::int16_t value = static_cast<std::int16_t>(g[c]);
-        const std::int16_t before = static_cast<std::int16_t>(vertical ? g[c - 1] : up[c]);
-        const std::int16_t after = static_cast<std::int16_t>(vertical ? g[c + 1] : down[c]);
-        const bool anchor = d[c] != 0 && static_cast<std::int16_t>(value - before) >= threshold &&
-                            static_cast<std::int16_t>(value - after) >= threshold;
-        e[c] = anchor ? kAnchor : 0;
+        const std::int16_t left = static_cast<std::int16_t>(g[c - 1]);
+        const std::int16_t right = static_cast<std::int16_t>(g[c + 1]);
+        const std::int16_t above = static_cast<std::int16_t>(up[c]);
+        const std::int16_t below = static_cast<std::int16_t>(down[c]);
+        const bool vertical = d[c] == kVertical;
+        const std::int16_t before = vertical ? left : above;
+        const std::int16_t after = vertical ? right : below;
+        const int anchor =
+            static_cast<int>(d[c] != 0) &
+            static_cast<int>(static_cast<std::int16_t>(value - before) >= threshold) &
+            static_cast<int>(static_cast<std::int16_t>(value - after) >= threshold);
+        e[c] = static_cast<std::uint8_t>(anchor * kAnchor);
       }
     }
     // Collect them, skipping eight non-anchors at a time.
@@ -651,8 +658,8 @@ bool EdLines::validate(const Line& line, const cv::Mat& gray) {
     // atan2(0, 0) = 0), so it counts as aligned with lines within 22.5 degrees of horizontal.
     if (gx == 0 && gy == 0) return std::abs(ux) >= kAlignedCos;
     // The level line runs along (-gy, gx); aligned when within 22.5 degrees of the line (mod pi).
-    const double along = std::abs(-gy * ux + gx * uy);
-    return along >= kAlignedCos * std::sqrt(static_cast<double>(gx) * gx + gy * gy);
+    const double along = -gy * ux + gx * uy;
+    return along * along >= kAlignedCos2 * (static_cast<double>(gx) * gx + gy * gy);
   };
   auto inside = [&](int r, int c) { return r > 0 && r < height_ - 1 && c > 0 && c < width_ - 1; };
 
