@@ -109,7 +109,13 @@ void Tracker::attempt(const cv::Mat& frame, const Polygon& prior, Attempt* a) {
     if (a->roi.empty()) a->roi = cv::Rect(cv::Point(0, 0), frame_size_);
   }
   to_gray(frame(a->roi), &gray_);
-  a->detected = detector_->detect_in(gray_, a->roi.tl(), frame_size_);
+  if (options_.detector.crop_to_boundary) {
+    // Detectors that can (scbt-edlines) look only at the band around the prior boundary.
+    a->detected = detector_->detect_near(gray_, a->roi.tl(), frame_size_, prior,
+                                         options_.filter_distance + options_.detector.roi_padding);
+  } else {
+    a->detected = detector_->detect_in(gray_, a->roi.tl(), frame_size_);
+  }
   a->line_ms = elapsed_ms(line_start);
 
   Clock::time_point stage_start = Clock::now();
