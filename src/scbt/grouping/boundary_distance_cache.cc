@@ -14,6 +14,7 @@ constexpr double kNotComputed = std::numeric_limits<double>::quiet_NaN();
 void BoundaryDistanceCache::reset(const SegmentGraph& graph, const Polygon& previous) {
   graph_ = &graph;
   previous_ = &previous;
+  query_.reset(previous);
   vertex_distance_.assign(graph.vertices.size(), kNotComputed);
   midpoint_distance_.assign(graph.edges.size(), kNotComputed);
   row_offset_.assign(graph.edges.size(), -1);
@@ -44,14 +45,14 @@ int BoundaryDistanceCache::edge_between(int u, int v) const {
 
 double BoundaryDistanceCache::vertex_distance(int v) {
   double& d = vertex_distance_[v];
-  if (std::isnan(d)) d = distance_to_boundary(graph_->vertices[v], *previous_);
+  if (std::isnan(d)) d = query_.distance(graph_->vertices[v], &hint_);
   return d;
 }
 
 double BoundaryDistanceCache::midpoint_distance(int edge, const Point& a, const Point& b) {
-  if (edge < 0) return distance_to_boundary((a + b) * 0.5, *previous_);
+  if (edge < 0) return query_.distance((a + b) * 0.5, &hint_);
   double& d = midpoint_distance_[edge];
-  if (std::isnan(d)) d = distance_to_boundary((a + b) * 0.5, *previous_);
+  if (std::isnan(d)) d = query_.distance((a + b) * 0.5, &hint_);
   return d;
 }
 

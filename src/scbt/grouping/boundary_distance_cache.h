@@ -4,6 +4,7 @@
 
 #include <vector>
 
+#include "scbt/geometry/boundary_query.h"
 #include "scbt/geometry/polygon.h"
 #include "scbt/grouping/segment_graph.h"
 
@@ -46,6 +47,8 @@ class BoundaryDistanceCache {
 
   const SegmentGraph* graph_ = nullptr;
   const Polygon* previous_ = nullptr;
+  BoundaryQuery query_;  // distances to the previous boundary
+  size_t hint_ = 0;      // its nearest edge for the last point asked
   // NaN: not computed yet.
   std::vector<double> vertex_distance_;
   std::vector<double> midpoint_distance_;
