@@ -6,6 +6,7 @@
 //   taskset -c 0 build/bench/scbt_bdsp_bench
 #include <benchmark/benchmark.h>
 
+#include <algorithm>
 #include <cmath>
 #include <random>
 #include <vector>
@@ -69,6 +70,24 @@ void BM_CycleSearch(benchmark::State& state) {
   set_counters(state, graph, search.candidates().size());
 }
 BENCHMARK(BM_CycleSearch)->Arg(50)->Arg(100)->Arg(150)->Unit(benchmark::kMicrosecond);
+
+// The tracker's path with the choice's gate (previous area = the ellipse's, similarity 0.9,
+// tolerance 0.1): bounded searches, only candidates that can be near ties kept.
+void BM_CycleSearchGated(benchmark::State& state) {
+  const SegmentGraph graph = make_graph(state);
+  CycleSearch search;
+  CandidateGate gate;
+  gate.previous_area = area(make_boundary());
+  for (auto _ : state) {
+    search.run(graph, BdspOptions{}, &gate);
+    benchmark::DoNotOptimize(search.candidates().data());
+  }
+  set_counters(state, graph, search.candidates().size());
+  double bounded = 0.0;
+  for (double limit : search.seed_limits()) bounded += std::isfinite(limit) ? limit : 0.0;
+  state.counters["mean_limit"] = bounded / std::max<size_t>(1, search.seed_limits().size());
+}
+BENCHMARK(BM_CycleSearchGated)->Arg(50)->Arg(100)->Arg(150)->Unit(benchmark::kMicrosecond);
 
 void BM_SearchCycleCandidates(benchmark::State& state) {
   const SegmentGraph graph = make_graph(state);

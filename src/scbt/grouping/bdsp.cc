@@ -9,6 +9,7 @@
 #include <string>
 
 #include "scbt/grouping/bdsp_generic.h"
+#include "scbt/grouping/boundary_choice.h"
 
 namespace scbt {
 
@@ -17,6 +18,26 @@ void BdspOptions::check() const {
     throw std::invalid_argument("bdsp seed_stride must be at least 1, got " +
                                 std::to_string(seed_stride));
   }
+}
+
+void CandidateGate::check() const {
+  if (!(previous_area > 0.0) || !std::isfinite(previous_area)) {
+    throw std::invalid_argument("candidate gate previous_area must be finite and positive, got " +
+                                std::to_string(previous_area));
+  }
+  if (!(min_similarity >= 0.0 && min_similarity <= 1.0)) {
+    throw std::invalid_argument("candidate gate min_similarity must be in [0, 1], got " +
+                                std::to_string(min_similarity));
+  }
+  if (!(tolerance >= 0.0) || !std::isfinite(tolerance)) {
+    throw std::invalid_argument("candidate gate tolerance must be finite and >= 0, got " +
+                                std::to_string(tolerance));
+  }
+}
+
+double CandidateGate::max_area() const {
+  return min_similarity > 0.0 ? previous_area / min_similarity
+                              : std::numeric_limits<double>::infinity();
 }
 
 Polygon candidate_polygon(const SegmentGraph& graph, const CycleCandidate& candidate) {
@@ -49,7 +70,7 @@ int key_vertex(FrontierKey key) { return static_cast<int>(static_cast<uint32_t>(
 // correct Dijkstra with that tie rule) and relaxes each vertex's arcs in the same order with the
 // same strict comparison, so the same distances (bit for bit) and parents (ties included). The
 // blocked edge's arcs weigh infinity meanwhile.
-int CycleSearch::shortest_paths(int tree, int source, int* parent) {
+int CycleSearch::shortest_paths(int tree, int source, int* parent, int num_thirds, double limit) {
   const int n = num_vertices_;
   double* distance = distance_[tree].data();
   int* order = order_[tree].data();
@@ -58,14 +79,14 @@ int CycleSearch::shortest_paths(int tree, int source, int* parent) {
 
   const Arc* arcs = arcs_.data();
   const int* begin = arc_begin_.data();
-  const char* is_third = is_third_.data();
+  const char* is_third = tree == 0 ? is_third_.data() : wanted_.data();
   int* position = frontier_position_.data();
   FrontierKey* frontier = frontier_.data();
   distance[source] = 0.0;
   parent[source] = -1;
   frontier[0] = frontier_key(0.0, source);
   position[source] = 0;
-  int settled = 0, thirds_left = num_thirds_;
+  int settled = 0, thirds_left = num_thirds;
   int size = 1;
   while (size > 0) {
     // The frontier is small (about ten vertices on these graphs): an unordered array scanned
@@ -86,9 +107,13 @@ int CycleSearch::shortest_paths(int tree, int source, int* parent) {
     thirds_left -= is_third[u];
     if (thirds_left == 0) break;  // the rest is never used
     const double d = distance[u];
+    // Arcs are sorted by weight (blocked ones aside, which weigh infinity in place): the arcs
+    // past `limit` are the last ones. With no limit (infinity) none is.
+    int end = begin[u + 1];
+    while (end > begin[u] && d + arcs[end - 1].weight > limit) --end;
     // Without a branch: whether an arc improves its end is close to a coin toss. A vertex not
     // in the frontier goes in slot `size` (only kept if it improved).
-    for (int k = begin[u]; k < begin[u + 1]; ++k) {
+    for (int k = begin[u]; k < end; ++k) {
       const double candidate = d + arcs[k].weight;
       const int w = arcs[k].vertex;
       const double old = distance[w];
@@ -176,9 +201,16 @@ void CycleSearch::find_dominated_edges(const SegmentGraph& graph, int stride) {
   }
 }
 
-void CycleSearch::run(const SegmentGraph& graph, const BdspOptions& options) {
+void CycleSearch::run(const SegmentGraph& graph, const BdspOptions& options,
+                      const CandidateGate* gate) {
   const int n = graph.num_vertices();
   options.check();
+  if (gate != nullptr) gate->check();
+  constexpr double kInfinity = std::numeric_limits<double>::infinity();
+  // The gate's bounds: the least admissible cost kept so far, the largest admissible area.
+  double best_cost = kInfinity;
+  const double max_area = gate != nullptr ? gate->max_area() : kInfinity;
+  seed_limits_.clear();
   const int stride = options.seed_stride;
   const int num_detected = static_cast<int>(graph.detected_edges.size());
   num_vertices_ = n;
@@ -197,8 +229,14 @@ void CycleSearch::run(const SegmentGraph& graph, const BdspOptions& options) {
       if (!dominated_[in.edge]) arcs_.push_back({in.vertex, in.edge, graph.edges[in.edge].weight});
     }
     arc_begin_[u + 1] = static_cast<int>(arcs_.size());
+    // By weight, so that a bounded search stops relaxing at the first arc past its bound (the
+    // order of one vertex's arcs changes neither distances nor parents: each reaches another
+    // end, or the same end from the same parent).
+    std::sort(arcs_.begin() + arc_begin_[u], arcs_.end(),
+              [](const Arc& l, const Arc& r) { return l.weight < r.weight; });
   }
   is_third_.assign(n, 0);
+  wanted_.assign(n, 0);
   num_thirds_ = 0;
   for (int e : graph.detected_edges) {
     const int third = graph.edges[e].u;
@@ -241,8 +279,23 @@ void CycleSearch::run(const SegmentGraph& graph, const BdspOptions& options) {
         }
       }
     }
-    const int settled1 = shortest_paths(0, s1, parent1);
-    const int settled2 = shortest_paths(1, s2, parent2);
+    // The seed's gap bound (CandidateGate in bdsp.h); the slack covers rounding.
+    double limit = kInfinity;
+    if (gate != nullptr && best_cost < kInfinity) {
+      limit = best_cost > 0.0 ? (1.0 + gate->tolerance) * best_cost * max_area * (1.0 + 1e-9) : 0.0;
+    }
+    seed_limits_.push_back(limit);
+    const int settled1 = shortest_paths(0, s1, parent1, num_thirds_, limit);
+    // Only the third vertices the first tree settled can close a cycle: the second search
+    // waits for those alone.
+    int wanted = 0;
+    for (int k = 0; k < settled1; ++k) {
+      const int v = order_[0][k];
+      wanted_[v] = is_third_[v];
+      wanted += is_third_[v];
+    }
+    const int settled2 = shortest_paths(1, s2, parent2, wanted, limit);
+    for (int k = 0; k < settled1; ++k) wanted_[order_[0][k]] = 0;
     for (const auto& [k, weight] : blocked_) arcs_[k].weight = weight;
 
     // Root-to-vertex sums of the shoelace terms, coordinates relative to s1 (smaller terms).
@@ -336,6 +389,14 @@ void CycleSearch::run(const SegmentGraph& graph, const BdspOptions& options) {
       // The blocked seed edge weighs 0, so the gap is what the two paths add up to.
       c.gap_length = d1[meeting] + d2[meeting];
       c.area = 0.5 * std::abs(sum1[meeting] - sum2[meeting]);
+      if (gate != nullptr) {
+        // What StableChooser::choose computes: a candidate not admissible, or costlier than
+        // (1 + tolerance) times a cost already found (>= the least one), is never a near tie.
+        if (!(area_similarity(gate->previous_area, c.area) > gate->min_similarity)) continue;
+        const double cost = grouping_cost(c.gap_length, c.area);
+        if (cost > best_cost * (1.0 + gate->tolerance)) continue;
+        best_cost = std::min(best_cost, cost);
+      }
       candidates_.push_back(c);
       found_.push_back({slot, meeting});
     }

@@ -28,6 +28,23 @@ struct BdspOptions {
   void check() const;
 };
 
+// What the boundary choice (StableChooser, boundary_choice.h) will do with the candidates, so
+// that CycleSearch can skip work that cannot change its choice. The choice admits candidates of
+// area similarity min(A_p / A_c, A_c / A_p) > min_similarity, takes the least grouping cost
+// Γ* = gap / area among them and, with a tolerance, every admissible candidate of
+// Γ <= Γ* (1 + tolerance) as a near tie.
+struct CandidateGate {
+  double previous_area = 0.0;   // A_p, the previous boundary's area
+  double min_similarity = 0.9;  // as TrackerOptions::min_area_similarity
+  double tolerance = 0.1;       // as TrackerOptions::cost_tolerance (0: only the least Γ)
+
+  // Throws std::invalid_argument naming a bad value: previous_area not finite and > 0,
+  // min_similarity outside [0, 1], tolerance negative or not finite.
+  void check() const;
+  // The largest admissible area, A_p / min_similarity (infinity for min_similarity 0).
+  double max_area() const;
+};
+
 // What the boundary choice needs of a candidate; its vertices are listed on demand
 // (CycleSearch::vertices).
 struct CandidateSummary {
@@ -50,10 +67,33 @@ struct CandidateSummary {
 //    skips edges that a strictly shorter two-edge detour makes useless to every search;
 //  - nothing is allocated once the buffers have grown to the graph's size.
 // options.generic_graph is ignored here. Not thread-safe; use one object per thread.
+//
+// With a CandidateGate (run's `gate`), the search keeps only candidates the gated choice can
+// pick, and bounds its Dijkstras (exact rule, tested):
+//  - Seeds are searched in order; before seed i, Γ_i is the least Γ of the admissible candidates
+//    kept from seeds 0..i-1 (infinity before any), and the seed's gap bound is
+//    G_i = (1 + tolerance) Γ_i max_area() (1 + 1e-9) (seed_limits()[i]; infinity while Γ_i is).
+//    A near tie has gap = Γ area <= (1 + tolerance) Γ* max_area() <= G_i.
+//  - Both Dijkstras of seed i settle only vertices within G_i of their root: an arc u -> w is
+//    not relaxed when d(u) + weight > G_i (arcs are sorted by weight, so the loop ends there).
+//    Distances and parents of the vertices within G_i are the unbounded search's, bit for bit.
+//  - So seed i yields the unbounded candidates whose third vertex lies within G_i of both s1
+//    and s2 (the repeat-of-a-cycle skip then only sees those thirds), filtered: a candidate is
+//    kept iff it is admissible and Γ <= Γ_best (1 + tolerance), Γ_best the least admissible Γ
+//    kept before it (in list order), computed with the chooser's own expressions.
+//  - The loss: a cycle whose gap is within G_i but whose every third vertex lies beyond G_i
+//    (the two paths share a long tail) is not found. The chooser's result can then differ from
+//    the unbounded one; the test measures how often on random graphs.
+//  - The order is the unbounded search's but for cycles first met from a third vertex the bound
+//    left out (then listed where a later third meets them). num_admissible of the choice then
+//    counts the kept candidates only (the ones that can be near ties), not all admissible ones.
+// Both Dijkstras stop once the third vertices settled by the first are settled (either way).
 class CycleSearch {
  public:
-  // Throws std::invalid_argument for bad options (BdspOptions::check).
-  void run(const SegmentGraph& graph, const BdspOptions& options = {});
+  // Throws std::invalid_argument for bad options (BdspOptions::check, CandidateGate::check).
+  // gate == nullptr: every candidate, unbounded searches (as search_cycle_candidates).
+  void run(const SegmentGraph& graph, const BdspOptions& options = {},
+           const CandidateGate* gate = nullptr);
 
   // The candidates of search_cycle_candidates, in the same order, with bit-identical gaps and
   // areas equal to ~1e-9 relative (summed in another order).
@@ -63,6 +103,11 @@ class CycleSearch {
   void vertices(int k, std::vector<int>* out) const;
   // Candidate k in full (vertices included), as search_cycle_candidates gives it.
   CycleCandidate candidate(int k) const;
+  // The vertex where candidate k's two shortest paths meet (the cycle is s1 ... it ... s2).
+  int meeting(int k) const { return found_.at(k).meeting; }
+  // The gap bound G_i each seed's searches used, one per seed in seed order (infinity when
+  // unbounded).
+  const std::vector<double>& seed_limits() const { return seed_limits_; }
 
  private:
   struct Arc {
@@ -76,8 +121,10 @@ class CycleSearch {
   };
   // Dijkstra from `source` (the seed's arcs weighing infinity) into distance_[tree], the parent
   // array `parent` and order_[tree] (settled vertices in order); stops when all third vertices
-  // are settled. Returns the number of settled vertices.
-  int shortest_paths(int tree, int source, int* parent);
+  // are settled (is_third_ for tree 0, wanted_ for tree 1) or nothing within `limit` is left:
+  // arcs u -> w with d(u) + weight > limit are not relaxed. Returns the number of settled
+  // vertices.
+  int shortest_paths(int tree, int source, int* parent, int num_thirds, double limit);
   void find_dominated_edges(const SegmentGraph& graph, int stride);
 
   int num_vertices_ = 0;
@@ -85,6 +132,8 @@ class CycleSearch {
   std::vector<int> arc_begin_;
   std::vector<Arc> arcs_;
   std::vector<char> is_third_;
+  std::vector<char> wanted_;  // third vertices settled by the first tree (the second waits for)
+  std::vector<double> seed_limits_;
   std::vector<char> is_seed_, dominated_;  // per edge
   std::vector<int> via_stamp_, via_edge_;
   std::vector<double> via_weight_;

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iostream>
 #include <map>
 #include <optional>
 #include <random>
@@ -76,7 +77,11 @@ double shoelace(const Polygon& p) {
 // The straightforward BDSP of the paper, kept here as the reference the optimised search must
 // match candidate for candidate: mark the whole second path for every third vertex, walk the
 // first path from s1 to the first marked vertex.
-std::vector<CycleCandidate> reference_candidates(const SegmentGraph& graph, int stride) {
+// With `limits` (one per seed), a seed's third vertices farther than its limit from s1 or s2
+// are left out, as CandidateGate's bounded searches do.
+std::vector<CycleCandidate> reference_candidates(const SegmentGraph& graph, int stride,
+                                                 const std::vector<double>* limits = nullptr,
+                                                 std::vector<int>* meetings = nullptr) {
   std::vector<CycleCandidate> candidates;
   const int n = graph.num_vertices();
   ShortestPaths first, second;
@@ -90,6 +95,10 @@ std::vector<CycleCandidate> reference_candidates(const SegmentGraph& graph, int 
     for (int j = 0; j < num_detected; ++j) {
       const int third = graph.edges[graph.detected_edges[j]].u;
       if (j == i || !first.reached(third) || !second.reached(third)) continue;
+      if (limits != nullptr && (first.distance(third) > (*limits)[i / stride] ||
+                                second.distance(third) > (*limits)[i / stride])) {
+        continue;
+      }
       std::set<int> on_second;
       for (int v = third; v != -1; v = second.parent_vertex(v)) on_second.insert(v);
       std::vector<int> path;
@@ -111,6 +120,7 @@ std::vector<CycleCandidate> reference_candidates(const SegmentGraph& graph, int 
       for (int v : c.vertices) polygon.push_back(graph.vertices[v]);
       c.area = std::abs(shoelace(polygon));
       candidates.push_back(c);
+      if (meetings != nullptr) meetings->push_back(path[meet]);
     }
   }
   return candidates;
@@ -369,6 +379,224 @@ TEST_P(BdspKnownCycle, ChooseBoundaryReturnsTheBrokenPolygon) {
 INSTANTIATE_TEST_SUITE_P(Shapes, BdspKnownCycle,
                          ::testing::Combine(::testing::Values(3, 4, 6, 8),
                                             ::testing::Range(0u, 15u)));
+
+TEST(CandidateGate, RejectsBadValues) {
+  CandidateGate gate;
+  gate.previous_area = 100.0;
+  EXPECT_NO_THROW(gate.check());
+  const double nan = std::nan("");
+  for (const double bad : {0.0, -1.0, nan, HUGE_VAL}) {
+    CandidateGate g = gate;
+    g.previous_area = bad;
+    EXPECT_THROW(g.check(), std::invalid_argument) << bad;
+  }
+  for (const double bad : {-0.1, 1.1, nan}) {
+    CandidateGate g = gate;
+    g.min_similarity = bad;
+    EXPECT_THROW(g.check(), std::invalid_argument) << bad;
+  }
+  for (const double bad : {-0.1, nan, HUGE_VAL}) {
+    CandidateGate g = gate;
+    g.tolerance = bad;
+    EXPECT_THROW(g.check(), std::invalid_argument) << bad;
+  }
+  EXPECT_DOUBLE_EQ(gate.max_area(), 100.0 / 0.9);
+  CandidateGate loose = gate;
+  loose.min_similarity = 0.0;
+  EXPECT_TRUE(std::isinf(loose.max_area()));
+  CycleSearch search;
+  CandidateGate bad = gate;
+  bad.previous_area = -5.0;
+  EXPECT_THROW(search.run(build_segment_graph({{{0, 0}, {10, 0}}}), BdspOptions{}, &bad),
+               std::invalid_argument);
+}
+
+// A random graph of one of three kinds (random, grid, a broken polygon among distractors) and a
+// gate around the area of one of its unbounded candidates (or of the polygon).
+struct GatedCase {
+  SegmentGraph graph;
+  BdspOptions options;
+  CandidateGate gate;
+  Polygon previous;
+};
+
+GatedCase gated_case(unsigned trial) {
+  GatedCase c;
+  std::mt19937 rng(trial * 613u + 29u);
+  const int kind = static_cast<int>(trial % 3);
+  const int count = std::uniform_int_distribution<int>(3, 100)(rng);
+  if (kind == 2) {
+    const BrokenPolygonScene scene =
+        broken_polygon(rng, std::uniform_int_distribution<int>(3, 8)(rng));
+    c.graph = build_segment_graph(scene.segments);
+    c.previous = scene.outline;
+  } else {
+    c.graph =
+        build_segment_graph(kind == 0 ? random_segments(rng, count) : grid_segments(rng, count));
+  }
+  c.options.seed_stride = std::uniform_int_distribution<int>(1, 3)(rng);
+  const double similarities[] = {0.0, 0.5, 0.8, 0.9, 0.9};
+  const double tolerances[] = {0.0, 0.05, 0.1, 0.1, 0.5};
+  c.gate.min_similarity = similarities[std::uniform_int_distribution<int>(0, 4)(rng)];
+  c.gate.tolerance = tolerances[std::uniform_int_distribution<int>(0, 4)(rng)];
+  return c;
+}
+
+// The previous boundary: the polygon scene's outline moved a little, or else a random unbounded
+// candidate's cycle scaled a little about its centroid (so that some candidates are admissible).
+Polygon previous_boundary(std::mt19937& rng, const GatedCase& c, const CycleSearch& unbounded) {
+  std::uniform_real_distribution<double> scale(0.93, 1.07), shift(-4.0, 4.0);
+  Polygon base = c.previous;
+  if (base.empty()) {
+    if (unbounded.size() == 0) return {{0, 0}, {10, 0}, {0, 10}};
+    const CycleCandidate pick =
+        unbounded.candidate(std::uniform_int_distribution<int>(0, unbounded.size() - 1)(rng));
+    base = candidate_polygon(c.graph, pick);
+  }
+  Point centroid(0, 0);
+  for (const Point& p : base) centroid += p * (1.0 / base.size());
+  const double k = scale(rng);
+  const Point move(shift(rng), shift(rng));
+  Polygon previous;
+  for (const Point& p : base) previous.push_back(centroid + (p - centroid) * k + move);
+  return previous;
+}
+
+// The gated search is exactly the documented rule: per seed, the gap bound from the candidates
+// kept before it, and the unbounded (reference) candidates whose third vertex is within that
+// bound of both seed endpoints, filtered by admissibility and cost.
+TEST(CandidateGate, KeepsExactlyTheDocumentedCandidates) {
+  CycleSearch unbounded, gated;
+  std::vector<int> cycle;
+  int bounded_seeds = 0, lost_thirds = 0;
+  for (unsigned trial = 0; trial < 240; ++trial) {
+    GatedCase c = gated_case(trial);
+    unbounded.run(c.graph, c.options);
+    std::mt19937 rng(trial + 5u);
+    const Polygon previous = previous_boundary(rng, c, unbounded);
+    c.gate.previous_area = std::abs(shoelace(previous));
+    if (!(c.gate.previous_area > 0.0)) continue;
+    gated.run(c.graph, c.options, &c.gate);
+    SCOPED_TRACE("trial " + std::to_string(trial));
+
+    const int stride = c.options.seed_stride;
+    const int num_seeds = (static_cast<int>(c.graph.detected_edges.size()) + stride - 1) / stride;
+    const std::vector<double>& limits = gated.seed_limits();
+    ASSERT_EQ(static_cast<int>(limits.size()), num_seeds);
+    // The limits from the kept candidates.
+    double best = HUGE_VAL;
+    size_t k = 0;
+    for (int slot = 0; slot < num_seeds; ++slot) {
+      double expected = HUGE_VAL;
+      if (best < HUGE_VAL) {
+        expected =
+            best > 0.0 ? (1.0 + c.gate.tolerance) * best * c.gate.max_area() * (1.0 + 1e-9) : 0.0;
+      }
+      EXPECT_EQ(limits[slot], expected) << "seed " << slot;
+      bounded_seeds += expected < HUGE_VAL;
+      const int seed = c.graph.detected_edges[slot * stride];
+      for (; k < gated.candidates().size() && gated.candidates()[k].seed_edge == seed; ++k) {
+        const CandidateSummary& s = gated.candidates()[k];
+        EXPECT_GT(area_similarity(c.gate.previous_area, s.area), c.gate.min_similarity);
+        best = std::min(best, grouping_cost(s.gap_length, s.area));
+      }
+    }
+    EXPECT_EQ(k, gated.candidates().size());
+
+    // The reference under the same limits, then the admissibility and cost filter. The filter
+    // compares costs to the last bit (tolerance 0 keeps exact ties only), so it takes the areas
+    // CycleSearch computes (same cycle, same seed in the unbounded search; they differ from the
+    // reference's shoelace by rounding).
+    std::vector<int> meetings;
+    std::vector<CycleCandidate> all = reference_candidates(c.graph, stride, &limits, &meetings);
+    lost_thirds += unbounded.size() - static_cast<int>(all.size());
+    std::map<std::pair<int, int>, double> search_area;  // by (seed, meeting)
+    for (int i = 0; i < unbounded.size(); ++i) {
+      search_area[{unbounded.candidates()[i].seed_edge, unbounded.meeting(i)}] =
+          unbounded.candidates()[i].area;
+    }
+    for (size_t i = 0; i < all.size(); ++i) {
+      CycleCandidate& r = all[i];
+      const auto it = search_area.find({r.seed_edge, meetings[i]});
+      ASSERT_NE(it, search_area.end()) << "a bounded candidate the unbounded search lacks";
+      r.area = it->second;
+    }
+    std::vector<CycleCandidate> expected;
+    double least = HUGE_VAL;
+    for (const CycleCandidate& r : all) {
+      if (!(area_similarity(c.gate.previous_area, r.area) > c.gate.min_similarity)) continue;
+      const double cost = grouping_cost(r.gap_length, r.area);
+      if (cost > least * (1.0 + c.gate.tolerance)) continue;
+      least = std::min(least, cost);
+      expected.push_back(r);
+    }
+    ASSERT_EQ(gated.size(), static_cast<int>(expected.size()));
+    for (int i = 0; i < gated.size(); ++i) {
+      EXPECT_EQ(gated.candidates()[i].seed_edge, expected[i].seed_edge) << i;
+      EXPECT_EQ(gated.candidates()[i].gap_length, expected[i].gap_length) << i;
+      EXPECT_EQ(gated.candidates()[i].area, expected[i].area) << i;
+      gated.vertices(i, &cycle);
+      EXPECT_EQ(cycle, expected[i].vertices) << i;
+    }
+  }
+  // The bound is exercised: many seeds searched bounded, and some thirds left out by it.
+  EXPECT_GT(bounded_seeds, 500);
+  EXPECT_GT(lost_thirds, 0);
+  std::cout << "[ gate     ] " << bounded_seeds << " bounded seeds, " << lost_thirds
+            << " unbounded candidates beyond the bounds\n";
+}
+
+// What the tracker sees: StableChooser over the gated candidates against StableChooser over
+// the unbounded ones, same previous boundary. The gate can only differ where a near tie is lost
+// beyond a bound (see bdsp.h); the rate is printed and held small.
+TEST(CandidateGate, ChoosesAsTheUnboundedSearch) {
+  CycleSearch unbounded, gated;
+  StableChooser chooser;
+  std::vector<int> a, b;
+  int compared = 0, chosen = 0, mismatches = 0;
+  for (unsigned trial = 0; trial < 900; ++trial) {
+    GatedCase c = gated_case(trial + 1000u);
+    unbounded.run(c.graph, c.options);
+    std::mt19937 rng(trial + 77u);
+    const Polygon previous = previous_boundary(rng, c, unbounded);
+    c.gate.previous_area = area(previous);
+    if (!(c.gate.previous_area > 0.0)) continue;
+    gated.run(c.graph, c.options, &c.gate);
+    const auto list = [](const CycleSearch& s) {
+      return [&s](int index, std::vector<int>* out) { s.vertices(index, out); };
+    };
+    const std::optional<BoundaryChoice> want =
+        chooser.choose(unbounded.candidates(), list(unbounded), c.graph, previous,
+                       c.gate.min_similarity, c.gate.tolerance);
+    const std::optional<BoundaryChoice> got =
+        chooser.choose(gated.candidates(), list(gated), c.graph, previous, c.gate.min_similarity,
+                       c.gate.tolerance);
+    ++compared;
+    // A gated choice is never invented: without an unbounded one there is none.
+    if (!want) {
+      EXPECT_FALSE(got.has_value()) << "trial " << trial;
+      continue;
+    }
+    ++chosen;
+    bool same = got.has_value();
+    if (same) {
+      const CandidateSummary& w = unbounded.candidates()[want->index];
+      const CandidateSummary& g = gated.candidates()[got->index];
+      unbounded.vertices(want->index, &a);
+      gated.vertices(got->index, &b);
+      std::sort(a.begin(), a.end());
+      std::sort(b.begin(), b.end());
+      same = w.gap_length == g.gap_length && std::abs(w.area - g.area) <= 1e-9 * (1.0 + w.area) &&
+             a == b;
+      EXPECT_LE(got->num_admissible, want->num_admissible);
+    }
+    mismatches += !same;
+  }
+  std::cout << "[ gate     ] " << compared << " graphs, " << chosen << " with a choice, "
+            << mismatches << " chosen differently\n";
+  EXPECT_GT(chosen, 500);
+  EXPECT_LE(mismatches, chosen * 3 / 100) << "more than 3% of the choices differ";
+}
 
 TEST(Bdsp, NoCandidatesWithoutCycles) {
   // One detected segment: the only other path between its endpoints would be the segment itself.
