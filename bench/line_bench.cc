@@ -1,5 +1,5 @@
-// Line detection micro-benchmarks: our EDLines ("scbt-edlines") against OpenCV's EdgeDrawing
-// ("edlines") on a synthetic 640x480 frame (a box outline over clutter and noise, as the
+// Line detection micro-benchmarks: our EDLines ("edlines") against OpenCV's EdgeDrawing
+// ("opencv-edlines") on a synthetic 640x480 frame (a box outline over clutter and noise, as the
 // tracker sees it), on the whole frame, on the tracker's window around the boundary, and on that
 // window restricted to the band within 28 px of the boundary; plus the grey conversion of the
 // window. Run pinned to one core:
@@ -60,8 +60,8 @@ void run(benchmark::State& state, LineDetectorKind kind) {
   state.counters["pixels"] = static_cast<double>(roi.area());
 }
 
-void BM_OwnEdLines(benchmark::State& state) { run(state, LineDetectorKind::kScbtEdLines); }
-void BM_OpenCvEdLines(benchmark::State& state) { run(state, LineDetectorKind::kEdLines); }
+void BM_OwnEdLines(benchmark::State& state) { run(state, LineDetectorKind::kEdLines); }
+void BM_OpenCvEdLines(benchmark::State& state) { run(state, LineDetectorKind::kOpenCvEdLines); }
 BENCHMARK(BM_OwnEdLines)->Arg(0)->Arg(1)->Arg(2)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_OpenCvEdLines)->Arg(0)->Arg(1)->Arg(2)->Unit(benchmark::kMicrosecond);
 

@@ -88,7 +88,7 @@ class BoundaryChoice:
 class Tracker:
     """The salient closed boundary tracker.
 
-    Keyword options (paper defaults): detector='edlines' ('lsd', 'fld'),
+    Keyword options (paper defaults): detector='edlines' ('opencv-edlines', 'lsd', 'fld'),
     gradient_threshold=36, anchor_threshold=8, scan_interval=1, sigma=1.0,
     min_line_length=-1.0 (automatic), line_fit_error=1.0, crop_to_boundary=True,
     roi_padding=8.0, filter_distance=20.0, min_area_similarity=0.9, cost_tolerance=0.1,

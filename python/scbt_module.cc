@@ -510,7 +510,7 @@ PYBIND11_MODULE(scbt, m) {
   py::class_<PyTracker>(m, "Tracker",
                         "The salient closed boundary tracker.\n\n"
                         "Tracker(**options) with keyword options (paper defaults):\n"
-                        "  detector='edlines' ('lsd', 'fld'), gradient_threshold=36,\n"
+                        "  detector='edlines' ('opencv-edlines', 'lsd', 'fld'), gradient_threshold=36,\n"
                         "  anchor_threshold=8, scan_interval=1, sigma=1.0,\n"
                         "  min_line_length=-1 (automatic), line_fit_error=1.0,\n"
                         "  crop_to_boundary=True, roi_padding=8.0, filter_distance=20.0,\n"

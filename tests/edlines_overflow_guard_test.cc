@@ -44,21 +44,26 @@ TEST(EdLinesOverflowGuard, SerpentineStrokesAreDetectedWithoutOverflow) {
       const cv::Mat image = serpentine(size, pitch);
       // The input really is one that would overflow detectLines' (cols + rows) * 8 arrays.
       ASSERT_GT(longest_edge_segment(image), static_cast<size_t>(2 * size * 8));
-      LineDetectorOptions options;
-      std::unique_ptr<LineDetector> detector = make_line_detector(options);
-      const std::vector<Segment> segments = detector->detect(image);
-      // Each horizontal run has two long sides; most of them must be found.
-      const int runs = (size - 20 + pitch - 1) / pitch;
-      int long_horizontal = 0;
-      for (const Segment& s : segments) {
-        if (s.length() > 0.6 * (size - 20) && std::abs(s.a.y - s.b.y) < 3) ++long_horizontal;
+      // OpenCV's (guarded) and ours (flat buffers, no such limit).
+      for (LineDetectorKind kind : {LineDetectorKind::kOpenCvEdLines, LineDetectorKind::kEdLines}) {
+        SCOPED_TRACE(to_string(kind));
+        LineDetectorOptions options;
+        options.kind = kind;
+        std::unique_ptr<LineDetector> detector = make_line_detector(options);
+        const std::vector<Segment> segments = detector->detect(image);
+        // Each horizontal run has two long sides; most of them must be found.
+        const int runs = (size - 20 + pitch - 1) / pitch;
+        int long_horizontal = 0;
+        for (const Segment& s : segments) {
+          if (s.length() > 0.6 * (size - 20) && std::abs(s.a.y - s.b.y) < 3) ++long_horizontal;
+        }
+        EXPECT_GE(long_horizontal, runs);
+        // The same through a crop (the tracker detects in a window around the boundary).
+        const cv::Rect window(size / 4, size / 4, size / 2, size / 2);
+        const std::vector<Segment> in_window =
+            detector->detect_in(image(window).clone(), window.tl(), image.size());
+        EXPECT_FALSE(in_window.empty());
       }
-      EXPECT_GE(long_horizontal, runs);
-      // The same through a crop (the tracker detects in a window around the boundary).
-      const cv::Rect window(size / 4, size / 4, size / 2, size / 2);
-      const std::vector<Segment> in_window =
-          detector->detect_in(image(window).clone(), window.tl(), image.size());
-      EXPECT_FALSE(in_window.empty());
     }
   }
 }

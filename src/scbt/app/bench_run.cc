@@ -150,8 +150,8 @@ BenchReport run_bench(const BenchRunOptions& options, std::ostream& log) {
       plain.bdsp.generic_graph = true;
       // The straightforward detector is OpenCV's EdgeDrawing, the library implementation of the
       // paper's EDLines; other detectors are compared with themselves on the whole frame.
-      if (plain.detector.kind == LineDetectorKind::kScbtEdLines) {
-        plain.detector.kind = LineDetectorKind::kEdLines;
+      if (plain.detector.kind == LineDetectorKind::kEdLines) {
+        plain.detector.kind = LineDetectorKind::kOpenCvEdLines;
       }
       runs.push_back(make_samples("straightforward", plain));
     }

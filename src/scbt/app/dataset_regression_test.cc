@@ -1,7 +1,9 @@
 // End-to-end accuracy regression on the public dataset (skipped when it is absent): scbt's
 // default tracker, run by the same code as `scbt eval`, must keep each sequence's success rate
-// at 10 px (E_AL < 10) at or above a floor. The floors are the rates measured when recovery by
-// image motion landed, minus 0.01 for run-to-run noise, so any accuracy loss shows up here.
+// at 10 px (E_AL < 10) at or above a floor. The floors are the rates measured when our own
+// band-limited EDLines became the default detector, minus 0.01 for run-to-run noise, so any
+// accuracy loss shows up here. (MarkCup's .976 equals the straightforward pipeline's, whole-frame
+// OpenCV EDLines; with OpenCV's detector on the window it was .994.)
 #include <gtest/gtest.h>
 
 #include <cstdlib>
@@ -21,8 +23,8 @@ TEST(DatasetRegression, SuccessAt10PxStaysAboveFloors) {
       !std::filesystem::is_directory(std::string(dataset) + "/OriginalVideosAVI")) {
     GTEST_SKIP() << "dataset not found (set SCBT_DATASET); skipping the accuracy regression";
   }
-  const std::map<std::string, double> floors = {{"BookStand", 0.978}, {"Bowl", 0.99},
-                                                {"MarkCup", 0.984},   {"MarkCupContour", 0.983},
+  const std::map<std::string, double> floors = {{"BookStand", 0.986}, {"Bowl", 0.988},
+                                                {"MarkCup", 0.966},   {"MarkCupContour", 0.99},
                                                 {"ToolBox", 0.989},   {"TransparentCup", 0.99}};
 
   EvalRunOptions options;

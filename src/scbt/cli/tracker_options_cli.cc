@@ -4,9 +4,9 @@ namespace scbt::cli {
 
 void add_tracker_options(CLI::App* command, TrackerOptions* options, std::string* detector_name) {
   command
-      ->add_option(
-          "--detector", *detector_name,
-          "Line segment detector: edlines (OpenCV's EdgeDrawing), scbt-edlines (ours), lsd or fld")
+      ->add_option("--detector", *detector_name,
+                   "Line segment detector: edlines (ours), opencv-edlines (OpenCV's EdgeDrawing), "
+                   "lsd or fld")
       ->capture_default_str();
   command
       ->add_option("--filter-distance", options->filter_distance,

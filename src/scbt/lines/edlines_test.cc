@@ -332,7 +332,7 @@ TEST(EdLines, OddImagesDoNotCrash) {
 // are covered by ours.
 TEST(EdLines, AgreesWithOpenCvEdgeDrawing) {
   LineDetectorOptions options;
-  options.kind = LineDetectorKind::kEdLines;  // OpenCV's
+  options.kind = LineDetectorKind::kOpenCvEdLines;  // OpenCV's
   std::unique_ptr<LineDetector> opencv = make_line_detector(options);
   for (unsigned seed = 1; seed <= 12; ++seed) {
     SceneOptions scene_options;

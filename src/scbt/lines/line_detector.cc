@@ -238,20 +238,20 @@ int edlines_auto_min_line_length(cv::Size size) {
 }
 
 LineDetectorKind parse_line_detector_kind(const std::string& name) {
-  if (name == "edlines" || name == "opencv-edlines") return LineDetectorKind::kEdLines;
-  if (name == "scbt-edlines") return LineDetectorKind::kScbtEdLines;
+  if (name == "edlines" || name == "scbt-edlines") return LineDetectorKind::kEdLines;
+  if (name == "opencv-edlines") return LineDetectorKind::kOpenCvEdLines;
   if (name == "lsd") return LineDetectorKind::kLsd;
   if (name == "fld") return LineDetectorKind::kFastLineDetector;
   throw std::invalid_argument("unknown line detector '" + name +
-                              "' (use edlines, scbt-edlines, lsd or fld)");
+                              "' (use edlines, opencv-edlines, lsd or fld)");
 }
 
 std::string to_string(LineDetectorKind kind) {
   switch (kind) {
     case LineDetectorKind::kEdLines:
       return "edlines";
-    case LineDetectorKind::kScbtEdLines:
-      return "scbt-edlines";
+    case LineDetectorKind::kOpenCvEdLines:
+      return "opencv-edlines";
     case LineDetectorKind::kLsd:
       return "lsd";
     case LineDetectorKind::kFastLineDetector:
@@ -292,9 +292,9 @@ void LineDetectorOptions::check() const {
 std::unique_ptr<LineDetector> make_line_detector(const LineDetectorOptions& options) {
   options.check();
   switch (options.kind) {
-    case LineDetectorKind::kEdLines:
+    case LineDetectorKind::kOpenCvEdLines:
       return std::make_unique<OpenCvEdLinesDetector>(options);
-    case LineDetectorKind::kScbtEdLines:
+    case LineDetectorKind::kEdLines:
       return std::make_unique<OwnEdLinesDetector>(options);
     case LineDetectorKind::kLsd:
       return std::make_unique<LsdDetector>(options);

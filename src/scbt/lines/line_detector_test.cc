@@ -78,8 +78,8 @@ TEST_P(LineDetectorFindsRectangle, EachSideMatchedBySegment) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Kinds, LineDetectorFindsRectangle,
-                         ::testing::Combine(::testing::Values(LineDetectorKind::kEdLines,
-                                                              LineDetectorKind::kScbtEdLines,
+                         ::testing::Combine(::testing::Values(LineDetectorKind::kOpenCvEdLines,
+                                                              LineDetectorKind::kEdLines,
                                                               LineDetectorKind::kLsd,
                                                               LineDetectorKind::kFastLineDetector),
                                             ::testing::Range(0u, 10u)),
@@ -91,7 +91,7 @@ INSTANTIATE_TEST_SUITE_P(Kinds, LineDetectorFindsRectangle,
 
 TEST(LineDetector, BlankImageHasNoSegments) {
   const cv::Mat blank(120, 160, CV_8UC1, cv::Scalar(128));
-  for (LineDetectorKind kind : {LineDetectorKind::kEdLines, LineDetectorKind::kScbtEdLines,
+  for (LineDetectorKind kind : {LineDetectorKind::kOpenCvEdLines, LineDetectorKind::kEdLines,
                                 LineDetectorKind::kLsd, LineDetectorKind::kFastLineDetector}) {
     LineDetectorOptions options;
     options.kind = kind;
@@ -114,13 +114,14 @@ TEST(LineDetector, ConvenienceAcceptsColourAndMinLengthFilters) {
 }
 
 TEST(LineDetectorKindNames, RoundTripAndUnknown) {
-  for (LineDetectorKind kind : {LineDetectorKind::kEdLines, LineDetectorKind::kScbtEdLines,
+  for (LineDetectorKind kind : {LineDetectorKind::kOpenCvEdLines, LineDetectorKind::kEdLines,
                                 LineDetectorKind::kLsd, LineDetectorKind::kFastLineDetector}) {
     EXPECT_EQ(parse_line_detector_kind(to_string(kind)), kind);
   }
   EXPECT_EQ(to_string(LineDetectorKind::kEdLines), "edlines");
-  EXPECT_EQ(to_string(LineDetectorKind::kScbtEdLines), "scbt-edlines");
-  EXPECT_EQ(parse_line_detector_kind("opencv-edlines"), LineDetectorKind::kEdLines);
+  EXPECT_EQ(to_string(LineDetectorKind::kOpenCvEdLines), "opencv-edlines");
+  EXPECT_EQ(parse_line_detector_kind("scbt-edlines"), LineDetectorKind::kEdLines);
+  EXPECT_EQ(LineDetectorOptions().kind, LineDetectorKind::kEdLines);  // ours is the default
   EXPECT_EQ(to_string(LineDetectorKind::kLsd), "lsd");
   EXPECT_EQ(to_string(LineDetectorKind::kFastLineDetector), "fld");
   for (const std::string bad : {"", "EDLINES", "hough", "lsd "}) {
@@ -212,7 +213,7 @@ TEST(LineDetectorDetectIn, WindowMatchesWholeFrame) {
     cv::Mat image(480, 640, CV_8UC1, cv::Scalar(60));
     cv::rectangle(image, rect, cv::Scalar(200), cv::FILLED);
     cv::line(image, {0, 470}, {630, 10}, cv::Scalar(140), 3);  // a distractor crossing the frame
-    for (LineDetectorKind kind : {LineDetectorKind::kEdLines, LineDetectorKind::kScbtEdLines,
+    for (LineDetectorKind kind : {LineDetectorKind::kOpenCvEdLines, LineDetectorKind::kEdLines,
                                   LineDetectorKind::kLsd, LineDetectorKind::kFastLineDetector}) {
       LineDetectorOptions options;
       options.kind = kind;

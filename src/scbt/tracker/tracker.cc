@@ -110,7 +110,7 @@ void Tracker::attempt(const cv::Mat& frame, const Polygon& prior, Attempt* a) {
   }
   to_gray(frame(a->roi), &gray_);
   if (options_.detector.crop_to_boundary) {
-    // Detectors that can (scbt-edlines) look only at the band around the prior boundary.
+    // Detectors that can (edlines) look only at the band around the prior boundary.
     a->detected = detector_->detect_near(gray_, a->roi.tl(), frame_size_, prior,
                                          options_.filter_distance + options_.detector.roi_padding);
   } else {
