@@ -11,6 +11,7 @@
 #include <random>
 #include <vector>
 
+#include "bench_inputs.h"
 #include "scbt/grouping/bdsp.h"
 #include "scbt/grouping/bdsp_generic.h"
 #include "scbt/grouping/segment_graph.h"
@@ -18,37 +19,8 @@
 namespace scbt {
 namespace {
 
-Polygon make_boundary() {
-  Polygon boundary;
-  for (int k = 0; k < 16; ++k) {
-    const double t = 2.0 * M_PI * k / 16.0;
-    boundary.push_back({320.0 + 150.0 * std::cos(t), 240.0 + 100.0 * std::sin(t)});
-  }
-  return boundary;
-}
-
-std::vector<Segment> make_segments(const Polygon& boundary, int count, unsigned seed) {
-  std::mt19937 rng(seed);
-  std::uniform_real_distribution<double> unit(0.0, 1.0), jitter(-1.0, 1.0), offset(-15.0, 15.0);
-  std::vector<Segment> segments;
-  const int n = static_cast<int>(boundary.size());
-  const int on_boundary = count * 2 / 3;
-  const int pieces = std::max(1, on_boundary / n);
-  for (int i = 0; i < n; ++i) {
-    const Point a = boundary[i], b = boundary[(i + 1) % n];
-    for (int k = 0; k < pieces; ++k) {
-      const double t0 = (k + 0.1 * unit(rng)) / pieces, t1 = (k + 0.8 + 0.1 * unit(rng)) / pieces;
-      segments.push_back({a + (b - a) * t0 + Point(jitter(rng), jitter(rng)),
-                          a + (b - a) * t1 + Point(jitter(rng), jitter(rng))});
-    }
-  }
-  while (static_cast<int>(segments.size()) < count) {
-    const Point p = boundary[static_cast<int>(unit(rng) * n) % n] + Point(offset(rng), offset(rng));
-    const double angle = 2.0 * M_PI * unit(rng), length = 8.0 + 30.0 * unit(rng);
-    segments.push_back({p, p + Point(std::cos(angle), std::sin(angle)) * length});
-  }
-  return segments;
-}
+using bench_inputs::make_boundary;
+using bench_inputs::make_segments;
 
 SegmentGraph make_graph(const benchmark::State& state) {
   return build_segment_graph(make_segments(make_boundary(), static_cast<int>(state.range(0)), 13));

@@ -10,9 +10,9 @@
 #include <opencv2/imgcodecs.hpp>
 #include <sstream>
 
+#include "scbt/app/test_dataset.h"
 #include "scbt/eval/alignment_error.h"
 #include "scbt/geometry/polygon_io.h"
-#include "scbt/synthetic/scene.h"
 
 namespace scbt {
 namespace {
@@ -49,26 +49,7 @@ class EvalRunTest : public ::testing::Test {
   void TearDown() override { fs::remove_all(root_); }
 
   void add_sequence(const std::string& name, SceneShape shape, Point shift, std::uint32_t seed) {
-    SceneOptions scene;
-    scene.seed = seed;
-    scene.shape = shape;
-    scene.size = {320, 240};
-    scene.object_size = 45.0;
-    Pose start;
-    start.translation = {130.0, 120.0};
-    const std::vector<SceneFrame> clip =
-        render_clip(scene, linear_motion_path(start, shift, kFrames));
-    const fs::path frames = root_ / "data" / "OriginalVideosAVI" / name;
-    fs::create_directories(frames);
-    fs::create_directories(root_ / "data" / "GroundTruthByPolygons");
-    std::ofstream truth(root_ / "data" / "GroundTruthByPolygons" /
-                        (name + "_TrackingGroundTruth.txt"));
-    for (int i = 0; i < kFrames; ++i) {
-      char file[16];
-      std::snprintf(file, sizeof(file), "%04d.png", i + 1);
-      ASSERT_TRUE(cv::imwrite((frames / file).string(), clip[i].image));
-      truth << format_polygon_line(clip[i].truth) << '\n';
-    }
+    write_synthetic_sequence(root_ / "data", name, shape, {130.0, 120.0}, shift, seed, kFrames);
   }
 
   fs::path root_;
