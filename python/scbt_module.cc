@@ -507,16 +507,17 @@ PYBIND11_MODULE(scbt, m) {
       .def_readonly("num_admissible", &BoundaryChoice::num_admissible,
                     "Candidates that passed the similarity gate.");
 
-  py::class_<PyTracker>(m, "Tracker",
-                        "The salient closed boundary tracker.\n\n"
-                        "Tracker(**options) with keyword options (paper defaults):\n"
-                        "  detector='edlines' ('opencv-edlines', 'lsd', 'fld'), gradient_threshold=36,\n"
-                        "  anchor_threshold=8, scan_interval=1, sigma=1.0,\n"
-                        "  min_line_length=-1 (automatic), line_fit_error=1.0,\n"
-                        "  crop_to_boundary=True, roi_padding=8.0, filter_distance=20.0,\n"
-                        "  min_area_similarity=0.9, cost_tolerance=0.1, max_segments=1500,\n"
-                        "  seed_stride=2, keep_debug=False.\n"
-                        "Raises ValueError naming a bad value, TypeError for an unknown option.")
+  py::class_<PyTracker>(
+      m, "Tracker",
+      "The salient closed boundary tracker.\n\n"
+      "Tracker(**options) with keyword options (paper defaults):\n"
+      "  detector='edlines' ('opencv-edlines', 'lsd', 'fld'), gradient_threshold=36,\n"
+      "  anchor_threshold=8, scan_interval=1, sigma=1.0,\n"
+      "  min_line_length=-1 (automatic), line_fit_error=1.0,\n"
+      "  crop_to_boundary=True, roi_padding=8.0, filter_distance=20.0,\n"
+      "  min_area_similarity=0.9, cost_tolerance=0.1, max_segments=1500,\n"
+      "  seed_stride=2, keep_debug=False.\n"
+      "Raises ValueError naming a bad value, TypeError for an unknown option.")
       .def(py::init<const py::kwargs&>())
       .def("init", &PyTracker::init, py::arg("frame"), py::arg("polygon"),
            "Sets the initial boundary: `polygon` is an (N, 2) array inside `frame`.\n"

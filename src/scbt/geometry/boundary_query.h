@@ -8,11 +8,11 @@
 
 namespace scbt {
 
-// Answers distance_to_boundary(p, boundary) (up to the last bit), faster when many points are asked in turn:
-// every edge is visited, but the exact distance is computed only for edges whose bounding box is
-// nearer than the best distance so far, starting from a hint (the nearest edge of a nearby point).
-// Per frame, the tracker asks a few hundred points against a boundary of tens of edges, and most
-// boxes are far from any one point. Keeps a reference to `boundary`; reusable across polygons.
+// Answers distance_to_boundary(p, boundary) (up to the last bit), faster when many points are asked
+// in turn: every edge is visited, but the exact distance is computed only for edges whose bounding
+// box is nearer than the best distance so far, starting from a hint (the nearest edge of a nearby
+// point). Per frame, the tracker asks a few hundred points against a boundary of tens of edges, and
+// most boxes are far from any one point. Keeps a reference to `boundary`; reusable across polygons.
 class BoundaryQuery {
  public:
   BoundaryQuery() = default;
