@@ -248,6 +248,54 @@ TEST(EdLines, BandKeepsSegmentsNearBoundary) {
   EXPECT_GE(found_count, 0.95 * compared) << found_count << " of " << compared;
 }
 
+// With a band, only pixels near it are read (gradients are computed on the band grown by one
+// pixel; smoothing, the line fit and the NFA test reach a few pixels further): replacing
+// everything farther than radius + 5 px by noise changes nothing, and a detector reused after
+// other windows (stale buffers outside the band) gives what a fresh one gives.
+TEST(EdLines, BandedDetectionReadsOnlyPixelsNearTheBand) {
+  const double radius = 28.0;
+  EdLines reused;
+  int segments_seen = 0;
+  for (unsigned seed = 500; seed < 520; ++seed) {
+    Scene scene = random_scene(seed);
+    std::mt19937 rng(seed);
+    std::uniform_int_distribution<int> x(0, 639), y(0, 479), level(0, 255);
+    for (int k = 0; k < 12; ++k) {
+      cv::line(scene.image, {x(rng), y(rng)}, {x(rng), y(rng)}, cv::Scalar(level(rng)), 3);
+    }
+    const Polygon& boundary = scene.polygons[seed % 4];
+    const cv::Rect window = detection_roi(boundary, radius, scene.image.size());
+    const cv::Mat crop = scene.image(window).clone();
+    cv::Mat band, near;
+    draw_band_mask(boundary, window.tl(), radius, crop.size(), &band);
+    draw_band_mask(boundary, window.tl(), radius + 5.0, crop.size(), &near);
+    const std::vector<Segment> expected = run(crop, window.tl(), scene.image.size(), band);
+    segments_seen += static_cast<int>(expected.size());
+
+    cv::Mat noisy(crop.size(), CV_8UC1);
+    cv::randu(noisy, 0, 256);
+    crop.copyTo(noisy, near);
+    const std::vector<Segment> far_noise = run(noisy, window.tl(), scene.image.size(), band);
+
+    // The reused detector first sees another scene's whole frame, so its buffers hold values
+    // everywhere.
+    std::vector<Segment> after_other;
+    const Scene other = random_scene(seed + 77);
+    reused.detect(other.image, {0, 0}, other.image.size(), cv::Mat(), &after_other);
+    reused.detect(crop, window.tl(), scene.image.size(), band, &after_other);
+
+    for (const std::vector<Segment>* got :
+         {&far_noise, static_cast<const std::vector<Segment>*>(&after_other)}) {
+      ASSERT_EQ(got->size(), expected.size()) << "seed " << seed;
+      for (size_t i = 0; i < expected.size(); ++i) {
+        EXPECT_EQ((*got)[i].a, expected[i].a) << "seed " << seed;
+        EXPECT_EQ((*got)[i].b, expected[i].b) << "seed " << seed;
+      }
+    }
+  }
+  EXPECT_GT(segments_seen, 100);
+}
+
 TEST(EdLines, Deterministic) {
   for (unsigned seed = 400; seed < 405; ++seed) {
     const Scene scene = random_scene(seed, 6.0);
