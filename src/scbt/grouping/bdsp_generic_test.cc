@@ -148,19 +148,5 @@ TEST(BdspGeneric, RejectsBadStride) {
   EXPECT_THROW(search_cycle_candidates_generic(graph, options), std::invalid_argument);
 }
 
-TEST(BdspGeneric, TriangleOfSegments) {
-  const SegmentGraph graph =
-      build_segment_graph({{{0, 0}, {40, 0}}, {{40, 0}, {0, 30}}, {{0, 30}, {0, 0}}});
-  BdspOptions options;
-  options.seed_stride = 1;
-  const std::vector<CycleCandidate> candidates = search_cycle_candidates_generic(graph, options);
-  ASSERT_FALSE(candidates.empty());
-  for (const CycleCandidate& c : candidates) {
-    EXPECT_EQ(c.vertices.size(), 3u);
-    EXPECT_EQ(c.gap_length, 0.0);
-    EXPECT_DOUBLE_EQ(c.area, 600.0);
-  }
-}
-
 }  // namespace
 }  // namespace scbt

@@ -605,17 +605,22 @@ TEST(Bdsp, NoCandidatesWithoutCycles) {
 }
 
 TEST(Bdsp, TriangleOfSegments) {
-  // Three sides of a triangle, all detected and touching: one cycle of gap 0.
+  // Three sides of a triangle, all detected and touching: one cycle of gap 0, by CycleSearch and
+  // by the generic-graph baseline.
   const SegmentGraph graph =
       build_segment_graph({{{0, 0}, {40, 0}}, {{40, 0}, {0, 30}}, {{0, 30}, {0, 0}}});
   BdspOptions options;
   options.seed_stride = 1;
-  const std::vector<CycleCandidate> candidates = search_cycle_candidates(graph, options);
-  ASSERT_FALSE(candidates.empty());
-  for (const CycleCandidate& c : candidates) {
-    EXPECT_EQ(c.vertices.size(), 3u);
-    EXPECT_EQ(c.gap_length, 0.0);
-    EXPECT_DOUBLE_EQ(c.area, 600.0);
+  for (bool generic : {false, true}) {
+    SCOPED_TRACE(generic ? "generic graph" : "CycleSearch");
+    options.generic_graph = generic;
+    const std::vector<CycleCandidate> candidates = search_cycle_candidates(graph, options);
+    ASSERT_FALSE(candidates.empty());
+    for (const CycleCandidate& c : candidates) {
+      EXPECT_EQ(c.vertices.size(), 3u);
+      EXPECT_EQ(c.gap_length, 0.0);
+      EXPECT_DOUBLE_EQ(c.area, 600.0);
+    }
   }
 }
 
