@@ -202,24 +202,42 @@ TEST(EdLines, WindowMatchesWholeImageInside) {
   }
 }
 
+// A random scene with clutter (random strokes anywhere, some crossing the band), one of its
+// polygons as the boundary, the tracker's window around it and the band mask of `radius`.
+struct BandCase {
+  Scene scene;
+  Polygon boundary;
+  cv::Rect window;
+  cv::Mat crop, band;
+};
+
+BandCase band_case(unsigned seed, double radius) {
+  BandCase c;
+  c.scene = random_scene(seed);
+  std::mt19937 rng(seed);
+  std::uniform_int_distribution<int> x(0, 639), y(0, 479), level(0, 255);
+  for (int k = 0; k < 12; ++k) {
+    cv::line(c.scene.image, {x(rng), y(rng)}, {x(rng), y(rng)}, cv::Scalar(level(rng)), 3);
+  }
+  c.boundary = c.scene.polygons[seed % 4];
+  c.window = detection_roi(c.boundary, radius, c.scene.image.size());
+  c.crop = c.scene.image(c.window).clone();
+  draw_band_mask(c.boundary, c.window.tl(), radius, c.crop.size(), &c.band);
+  return c;
+}
+
 // The band keeps only segments near the boundary and finds what the unbanded run finds well
 // inside it.
 TEST(EdLines, BandKeepsSegmentsNearBoundary) {
   const double radius = 28.0;
   int compared = 0, found_count = 0;
   for (unsigned seed = 300; seed < 330; ++seed) {
-    Scene scene = random_scene(seed);
-    // Clutter: random strokes anywhere, some crossing the band.
-    std::mt19937 rng(seed);
-    std::uniform_int_distribution<int> x(0, 639), y(0, 479), level(0, 255);
-    for (int k = 0; k < 12; ++k) {
-      cv::line(scene.image, {x(rng), y(rng)}, {x(rng), y(rng)}, cv::Scalar(level(rng)), 3);
-    }
-    const Polygon& boundary = scene.polygons[seed % 4];
-    const cv::Rect window = detection_roi(boundary, radius, scene.image.size());
-    const cv::Mat crop = scene.image(window).clone();
-    cv::Mat band;
-    draw_band_mask(boundary, window.tl(), radius, crop.size(), &band);
+    const BandCase c = band_case(seed, radius);
+    const Scene& scene = c.scene;
+    const Polygon& boundary = c.boundary;
+    const cv::Rect& window = c.window;
+    const cv::Mat& crop = c.crop;
+    const cv::Mat& band = c.band;
     const std::vector<Segment> banded = run(crop, window.tl(), scene.image.size(), band);
     const std::vector<Segment> unbanded = run(crop, window.tl(), scene.image.size());
     for (const Segment& s : banded) {
@@ -257,17 +275,13 @@ TEST(EdLines, BandedDetectionReadsOnlyPixelsNearTheBand) {
   EdLines reused;
   int segments_seen = 0;
   for (unsigned seed = 500; seed < 520; ++seed) {
-    Scene scene = random_scene(seed);
-    std::mt19937 rng(seed);
-    std::uniform_int_distribution<int> x(0, 639), y(0, 479), level(0, 255);
-    for (int k = 0; k < 12; ++k) {
-      cv::line(scene.image, {x(rng), y(rng)}, {x(rng), y(rng)}, cv::Scalar(level(rng)), 3);
-    }
-    const Polygon& boundary = scene.polygons[seed % 4];
-    const cv::Rect window = detection_roi(boundary, radius, scene.image.size());
-    const cv::Mat crop = scene.image(window).clone();
-    cv::Mat band, near;
-    draw_band_mask(boundary, window.tl(), radius, crop.size(), &band);
+    const BandCase c = band_case(seed, radius);
+    const Scene& scene = c.scene;
+    const Polygon& boundary = c.boundary;
+    const cv::Rect& window = c.window;
+    const cv::Mat& crop = c.crop;
+    const cv::Mat& band = c.band;
+    cv::Mat near;
     draw_band_mask(boundary, window.tl(), radius + 5.0, crop.size(), &near);
     const std::vector<Segment> expected = run(crop, window.tl(), scene.image.size(), band);
     segments_seen += static_cast<int>(expected.size());
