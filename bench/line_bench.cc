@@ -2,7 +2,7 @@
 // ("opencv-edlines") on a synthetic 640x480 frame (a box outline over clutter and noise, as the
 // tracker sees it), on the whole frame, on the tracker's window around the boundary, and on that
 // window restricted to the band within 28 px of the boundary; plus the grey conversion of the
-// window. Run pinned to one core:
+// window, and EDLines' Gaussian smoothing (ours against OpenCV's). Run pinned to one core:
 //   taskset -c 0 build/bench/scbt_line_bench
 #include <benchmark/benchmark.h>
 
@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "scbt/lines/edlines.h"
+#include "scbt/lines/gaussian_5x5.h"
 #include "scbt/lines/line_detector.h"
 #include "scbt/synthetic/scene.h"
 
@@ -86,6 +87,28 @@ void BM_WindowToGray(benchmark::State& state) {
   }
 }
 BENCHMARK(BM_WindowToGray)->Unit(benchmark::kMicrosecond);
+
+// EDLines' smoothing of the tracker's window: ours (gaussian_5x5.h) and OpenCV's, bit-identical.
+void BM_Gaussian5x5(benchmark::State& state) {
+  const cv::Mat window = gray_frame()(detection_roi(scene().truth, kBand, gray_frame().size()));
+  cv::Mat smooth;
+  for (auto _ : state) {
+    gaussian_blur_5x5(window, &smooth);
+    benchmark::DoNotOptimize(smooth.data);
+  }
+}
+BENCHMARK(BM_Gaussian5x5)->Unit(benchmark::kMicrosecond);
+
+void BM_OpenCvGaussian5x5(benchmark::State& state) {
+  const cv::Mat window =
+      gray_frame()(detection_roi(scene().truth, kBand, gray_frame().size())).clone();
+  cv::Mat smooth;
+  for (auto _ : state) {
+    cv::GaussianBlur(window, smooth, cv::Size(5, 5), 1.0, 1.0);
+    benchmark::DoNotOptimize(smooth.data);
+  }
+}
+BENCHMARK(BM_OpenCvGaussian5x5)->Unit(benchmark::kMicrosecond);
 
 }  // namespace
 }  // namespace scbt

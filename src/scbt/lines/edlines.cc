@@ -7,6 +7,9 @@
 #include <opencv2/imgproc.hpp>
 #include <stdexcept>
 
+#include "scbt/lines/gaussian_5x5.h"
+#include "scbt/lines/pixel_loop.h"
+
 namespace scbt {
 namespace {
 
@@ -70,6 +73,58 @@ void closest_point(double x, double y, double a, double b, bool invert, double* 
   *py = invert ? pu : pv;
 }
 
+// One row of Sobel gradients: magnitude |gx| + |gy| into g, and into d the edge direction of
+// the pixels at or above `threshold` (0 below), for columns 1 .. w - 2.
+SCBT_PIXEL_LOOP void sobel_row(const std::uint8_t* __restrict above,
+                               const std::uint8_t* __restrict row,
+                               const std::uint8_t* __restrict below, std::uint16_t* __restrict g,
+                               std::uint8_t* __restrict d, int w, std::int16_t threshold) {
+  for (int c = 1; c < w - 1; ++c) {
+    // Sobel: gx = (C + 2E + H) - (A + 2D + F), gy = (F + 2G + H) - (A + 2B + C) with
+    // A B C / D x E / F G H around the pixel.
+    // 16-bit arithmetic (|gx|, |gy| <= 1020) so that the loop vectorises 8 (16) pixels wide.
+    const std::int16_t diag1 = static_cast<std::int16_t>(below[c + 1] - above[c - 1]);  // H-A
+    const std::int16_t diag2 = static_cast<std::int16_t>(above[c + 1] - below[c - 1]);  // C-F
+    const std::int16_t sx =
+        static_cast<std::int16_t>(diag1 + diag2 + 2 * (row[c + 1] - row[c - 1]));
+    const std::int16_t sy = static_cast<std::int16_t>(diag1 - diag2 + 2 * (below[c] - above[c]));
+    const std::int16_t gx = static_cast<std::int16_t>(sx < 0 ? -sx : sx);
+    const std::int16_t gy = static_cast<std::int16_t>(sy < 0 ? -sy : sy);
+    const std::int16_t sum = static_cast<std::int16_t>(gx + gy);
+    g[c] = static_cast<std::uint16_t>(sum);
+    d[c] = sum < threshold ? 0 : (gx >= gy ? kVertical : kHorizontal);
+  }
+}
+
+// Clears the directions of the pixels outside the band (mask 0), columns 1 .. w - 2.
+SCBT_PIXEL_LOOP void mask_row(std::uint8_t* __restrict d, const std::uint8_t* __restrict m, int w) {
+  for (int c = 1; c < w - 1; ++c) d[c] = static_cast<std::uint8_t>(d[c] & (m[c] ? 0xFF : 0));
+}
+
+// Marks the anchors of one row in e, columns 2 .. w - 3, branch-free (vectorised): an anchor
+// exceeds both neighbours across its edge direction by `threshold`. Gradients fit in 16 bits
+// (at most 2040).
+SCBT_PIXEL_LOOP void anchor_row(const std::uint16_t* __restrict up,
+                                const std::uint16_t* __restrict g,
+                                const std::uint16_t* __restrict down,
+                                const std::uint8_t* __restrict d, std::uint8_t* __restrict e, int w,
+                                std::int16_t threshold) {
+  for (int c = 2; c < w - 2; ++c) {
+    const std::int16_t value = static_cast<std::int16_t>(g[c]);
+    const std::int16_t left = static_cast<std::int16_t>(g[c - 1]);
+    const std::int16_t right = static_cast<std::int16_t>(g[c + 1]);
+    const std::int16_t above = static_cast<std::int16_t>(up[c]);
+    const std::int16_t below = static_cast<std::int16_t>(down[c]);
+    const bool vertical = d[c] == kVertical;
+    const std::int16_t before = vertical ? left : above;
+    const std::int16_t after = vertical ? right : below;
+    const int anchor = static_cast<int>(d[c] != 0) &
+                       static_cast<int>(static_cast<std::int16_t>(value - before) >= threshold) &
+                       static_cast<int>(static_cast<std::int16_t>(value - after) >= threshold);
+    e[c] = static_cast<std::uint8_t>(anchor * kAnchor);
+  }
+}
+
 }  // namespace
 
 int edlines_min_line_length(const EdLinesParams& params, cv::Size full_size) {
@@ -126,9 +181,10 @@ void EdLines::detect(const cv::Mat& gray, cv::Point offset, cv::Size full_size, 
   if (width_ < 5 || height_ < 5) return;  // no interior pixel can be an anchor
 
   // OpenCV's GaussianBlur of a view into a larger image reads the pixels around it (and rounds
-  // differently): work on a copy, so that the result depends on the window's pixels only.
+  // differently): for other sigmas than EDLines' 1 (gaussian_blur_5x5, which reads the view's
+  // pixels only), work on a copy, so that the result depends on the window's pixels only.
   const cv::Mat* input = &gray;
-  if (!gray.isContinuous()) {
+  if (!gray.isContinuous() && params_.sigma != 1.0) {
     gray.copyTo(contiguous_);
     input = &contiguous_;
   }
@@ -153,7 +209,7 @@ void EdLines::smooth_and_gradient(const cv::Mat& gray, const cv::Mat& band) {
   if (params_.sigma < 1.0) {
     gray.copyTo(smooth_);
   } else if (params_.sigma == 1.0) {
-    cv::GaussianBlur(gray, smooth_, cv::Size(5, 5), 1.0, 1.0);
+    gaussian_blur_5x5(gray, &smooth_);
   } else {
     cv::GaussianBlur(gray, smooth_, cv::Size(), params_.sigma, params_.sigma);
   }
@@ -161,7 +217,19 @@ void EdLines::smooth_and_gradient(const cv::Mat& gray, const cv::Mat& band) {
   const size_t n = static_cast<size_t>(w) * h;
   grad_.resize(n);
   dir_.resize(n);
-  edge_.assign(n, 0);
+  if (std::max(params_.scan_interval, 1) == 1) {
+    // find_anchors writes every pixel it scans (rows and columns 2 .. size - 3): only the
+    // two-pixel frame around them needs clearing, not the whole map.
+    edge_.resize(n);
+    std::fill(edge_.begin(), edge_.begin() + 2 * w, 0);
+    std::fill(edge_.end() - 2 * w, edge_.end(), 0);
+    for (int r = 2; r < h - 2; ++r) {
+      std::uint8_t* e = edge_.data() + static_cast<size_t>(r) * w;
+      e[0] = e[1] = e[w - 2] = e[w - 1] = 0;
+    }
+  } else {
+    edge_.assign(n, 0);
+  }
   const int threshold = params_.gradient_threshold;
   const std::int16_t threshold16 = static_cast<std::int16_t>(std::min(threshold, 30000));
   // The frame's border pixels stop every walk.
@@ -176,26 +244,11 @@ void EdLines::smooth_and_gradient(const cv::Mat& gray, const cv::Mat& band) {
     const std::uint8_t* below = smooth_.ptr<std::uint8_t>(r + 1);
     std::uint16_t* g = grad_.data() + static_cast<size_t>(r) * w;
     std::uint8_t* d = dir_.data() + static_cast<size_t>(r) * w;
-    for (int c = 1; c < w - 1; ++c) {
-      // Sobel: gx = (C + 2E + H) - (A + 2D + F), gy = (F + 2G + H) - (A + 2B + C) with
-      // A B C / D x E / F G H around the pixel.
-      // 16-bit arithmetic (|gx|, |gy| <= 1020) so that the loop vectorises 8 pixels wide.
-      const std::int16_t diag1 = static_cast<std::int16_t>(below[c + 1] - above[c - 1]);  // H-A
-      const std::int16_t diag2 = static_cast<std::int16_t>(above[c + 1] - below[c - 1]);  // C-F
-      const std::int16_t sx =
-          static_cast<std::int16_t>(diag1 + diag2 + 2 * (row[c + 1] - row[c - 1]));
-      const std::int16_t sy = static_cast<std::int16_t>(diag1 - diag2 + 2 * (below[c] - above[c]));
-      const std::int16_t gx = static_cast<std::int16_t>(sx < 0 ? -sx : sx);
-      const std::int16_t gy = static_cast<std::int16_t>(sy < 0 ? -sy : sy);
-      const std::int16_t sum = static_cast<std::int16_t>(gx + gy);
-      g[c] = static_cast<std::uint16_t>(sum);
-      d[c] = sum < threshold16 ? 0 : (gx >= gy ? kVertical : kHorizontal);
-    }
+    sobel_row(above, row, below, g, d, w, threshold16);
     g[0] = g[w - 1] = border;
     d[0] = d[w - 1] = 0;
     if (!band.empty()) {
-      const std::uint8_t* m = band.ptr<std::uint8_t>(r);
-      for (int c = 1; c < w - 1; ++c) d[c] = static_cast<std::uint8_t>(d[c] & (m[c] ? 0xFF : 0));
+      mask_row(d, band.ptr<std::uint8_t>(r), w);
     }
   }
 }
@@ -216,25 +269,7 @@ void EdLines::find_anchors() {
         if (g[c] - g[c - across] >= threshold && g[c] - g[c + across] >= threshold) e[c] = kAnchor;
       }
     } else {
-      // Branch-free over the row (vectorised): an anchor exceeds both neighbours across its edge
-      // direction by the threshold. Gradients fit in 16 bits (at most 2040).
-      const std::uint16_t* up = g - w;
-      const std::uint16_t* down = g + w;
-      for (int c = 2; c < w - 2; ++c) {
-        const std::int16_t value = static_cast<std::int16_t>(g[c]);
-        const std::int16_t left = static_cast<std::int16_t>(g[c - 1]);
-        const std::int16_t right = static_cast<std::int16_t>(g[c + 1]);
-        const std::int16_t above = static_cast<std::int16_t>(up[c]);
-        const std::int16_t below = static_cast<std::int16_t>(down[c]);
-        const bool vertical = d[c] == kVertical;
-        const std::int16_t before = vertical ? left : above;
-        const std::int16_t after = vertical ? right : below;
-        const int anchor =
-            static_cast<int>(d[c] != 0) &
-            static_cast<int>(static_cast<std::int16_t>(value - before) >= threshold) &
-            static_cast<int>(static_cast<std::int16_t>(value - after) >= threshold);
-        e[c] = static_cast<std::uint8_t>(anchor * kAnchor);
-      }
+      anchor_row(g - w, g, g + w, d, e, w, threshold);
     }
     // Collect them, skipping eight non-anchors at a time.
     for (int c = 2; c < w - 2; ++c) {
