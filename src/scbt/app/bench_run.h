@@ -1,7 +1,8 @@
 // The body of `scbt bench`: time the tracker stage by stage on the dataset, in the optimised
 // configuration and in the straightforward one (whole-frame line detection, BDSP on a generic
-// graph: Boost.Graph's Dijkstra with every candidate materialised), side by side in the same run,
-// and score both against the ground truth.
+// graph: Boost.Graph's Dijkstra with every candidate materialised), in the same run, one pass
+// over each sequence per configuration, and score both against the ground truth after each pass
+// (scoring between frames would evict the tracker's data from the cache).
 #pragma once
 
 #include <ostream>
