@@ -698,21 +698,31 @@ bool EdLines::validate(const Line& line, const cv::Mat& gray) {
   };
   auto inside = [&](int r, int c) { return r > 0 && r < height_ - 1 && c > 0 && c < width_ - 1; };
 
+  // Both tests know how many pixels they look at before looking, so each stops as soon as the
+  // aligned ones reach the number needed, or can no longer reach it (same answer, fewer pixels).
   if (line.len > kRectTestUpTo) {
     const int begin = seg_start_[line.segment] + line.first;
     const int end = std::min(begin + line.len, seg_end_[line.segment]);
-    int count = 0, aligned = 0;
+    int count = 0;
     for (int i = begin; i < end; ++i) {
-      const int r = seg_pixels_[i] / width_, c = seg_pixels_[i] % width_;
-      if (!inside(r, c)) continue;
-      ++count;
-      aligned += aligned_at(r, c) ? 1 : 0;
+      count += inside(seg_pixels_[i] / width_, seg_pixels_[i] % width_) ? 1 : 0;
     }
-    if (count > 0 && aligned >= min_aligned(count)) return true;
+    if (count > 0) {
+      const int needed = min_aligned(count);
+      int aligned = 0, left = count;
+      for (int i = begin; i < end && aligned < needed && aligned + left >= needed; ++i) {
+        const int r = seg_pixels_[i] / width_, c = seg_pixels_[i] % width_;
+        if (!inside(r, c)) continue;
+        --left;
+        aligned += aligned_at(r, c) ? 1 : 0;
+      }
+      if (aligned >= needed) return true;
+    }
   }
   // Rectangle of width 2 centred on the line: pixel centres p with 0 <= (p - s).u <= length and
   // |(p - s) x u| <= 1.
-  int count = 0, aligned = 0;
+  int count = 0;
+  row_ranges_.clear();
   const int r0 = std::max(1, static_cast<int>(std::floor(std::min(line.sy, line.ey) - 1.0)));
   const int r1 =
       std::min(height_ - 2, static_cast<int>(std::ceil(std::max(line.sy, line.ey) + 1.0)));
@@ -733,15 +743,24 @@ bool EdLines::validate(const Line& line, const cv::Mat& gray) {
     const double ry = r - line.sy;
     clip(ux, -line.sx * ux + ry * uy, 0.0, length);  // along
     clip(-uy, line.sx * uy + ry * ux, -1.0, 1.0);    // across: (p - s) x u = px*uy - py*ux
+    // Rows and columns are clipped to the interior, where every pixel has its 3x3 neighbours.
     const int c0 = std::max(1, static_cast<int>(std::ceil(lo - 1e-9)));
     const int c1 = std::min(width_ - 2, static_cast<int>(std::floor(hi + 1e-9)));
-    for (int c = c0; c <= c1; ++c) {
-      if (!inside(r, c)) continue;
-      ++count;
-      aligned += aligned_at(r, c) ? 1 : 0;
+    if (c0 > c1) continue;
+    row_ranges_.push_back({r, c0, c1});
+    count += c1 - c0 + 1;
+  }
+  if (count == 0) return false;
+  const int needed = min_aligned(count);
+  int aligned = 0, left = count;
+  for (const RowRange& range : row_ranges_) {
+    for (int c = range.first; c <= range.last; ++c) {
+      if (aligned >= needed || aligned + left < needed) return aligned >= needed;
+      --left;
+      aligned += aligned_at(range.row, c) ? 1 : 0;
     }
   }
-  return count > 0 && aligned >= min_aligned(count);
+  return aligned >= needed;
 }
 
 std::vector<std::vector<cv::Point>> EdLines::edge_segments() const {

@@ -118,6 +118,10 @@ class EdLines {
   int open_begin_ = 0;  // first pixel of the segment being assembled
   std::vector<double> xs_, ys_;
   std::vector<Line> lines_;
+  struct RowRange {
+    int row, first, last;  // columns first .. last of `row`
+  };
+  std::vector<RowRange> row_ranges_;  // validate()'s rectangle, row by row
   // NFA: log10 of the number of tests of the current image, and log10 binomial tails (row n
   // starts at tail_start_[n]) kept across calls.
   double log_nt_ = 0.0;
