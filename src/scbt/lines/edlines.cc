@@ -135,29 +135,6 @@ int edlines_min_line_length(const EdLinesParams& params, cv::Size full_size) {
   return std::max(automatic, 9);
 }
 
-void draw_band_mask(const Polygon& boundary, cv::Point offset, double radius, cv::Size size,
-                    cv::Mat* mask) {
-  mask->create(size, CV_8UC1);
-  mask->setTo(0);
-  if (boundary.empty() || size.empty() || !(radius >= 0.0)) return;
-  constexpr int kShift = 4;  // sub-pixel vertices
-  constexpr double kScale = 1 << kShift;
-  const double limit = 1e6;
-  std::vector<cv::Point> points;
-  points.reserve(boundary.size());
-  for (const Point& p : boundary) {
-    const double x = std::clamp(p.x - offset.x, -limit, limit);
-    const double y = std::clamp(p.y - offset.y, -limit, limit);
-    points.emplace_back(static_cast<int>(std::lround((std::isfinite(x) ? x : limit) * kScale)),
-                        static_cast<int>(std::lround((std::isfinite(y) ? y : limit) * kScale)));
-  }
-  // OpenCV's thick lines reach about half a pixel beyond thickness / 2.
-  const int thickness = 2 * static_cast<int>(std::floor(std::min(radius, 10000.0))) + 1;
-  const cv::Point* pts = points.data();
-  const int count = static_cast<int>(points.size());
-  cv::polylines(*mask, &pts, &count, 1, true, cv::Scalar(255), thickness, cv::LINE_8, kShift);
-}
-
 EdLines::EdLines(const EdLinesParams& params) : params_(params) {}
 
 void EdLines::detect(const cv::Mat& gray, cv::Point offset, cv::Size full_size, const cv::Mat& band,

@@ -26,6 +26,7 @@
 #include <vector>
 
 #include "scbt/geometry/polygon.h"
+#include "scbt/lines/band_mask.h"  // the band detect() restricts edges to
 
 namespace scbt {
 
@@ -46,12 +47,6 @@ struct EdLinesParams {
 
 // The minimum number of pixels a line needs with `params` in an image of `full_size`.
 int edlines_min_line_length(const EdLinesParams& params, cv::Size full_size);
-
-// Fills `mask` (CV_8UC1 of `size`) with 255 on the pixels within `radius` of the closed polyline
-// `boundary` given in the coordinates of a larger image where the mask's pixel (0, 0) is
-// `offset`, 0 elsewhere. Coordinates are clamped, so any finite input is safe.
-void draw_band_mask(const Polygon& boundary, cv::Point offset, double radius, cv::Size size,
-                    cv::Mat* mask);
 
 class EdLines {
  public:

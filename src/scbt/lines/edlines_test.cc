@@ -425,9 +425,9 @@ TEST(EdLines, MinLineLength) {
   EXPECT_EQ(edlines_min_line_length(params, {640, 480}), 4);
 }
 
-// The mask is set within the radius of the boundary and clear beyond it (up to the rasterising
-// of thick lines).
-TEST(DrawBandMask, CoversPixelsWithinRadius) {
+// The mask is set exactly on the pixels whose centres lie within the radius of the boundary
+// (pixels within 1e-6 of the radius, where rounding decides, are not checked).
+TEST(DrawBandMask, SetsExactlyThePixelsWithinRadius) {
   std::mt19937 rng(9);
   std::uniform_real_distribution<double> unit(0.0, 1.0);
   for (int trial = 0; trial < 30; ++trial) {
@@ -437,16 +437,28 @@ TEST(DrawBandMask, CoversPixelsWithinRadius) {
     cv::Mat mask;
     draw_band_mask(boundary, offset, radius, {400, 300}, &mask);
     ASSERT_EQ(mask.type(), CV_8UC1);
-    for (int k = 0; k < 2000; ++k) {
-      const int c = static_cast<int>(unit(rng) * 400), r = static_cast<int>(unit(rng) * 300);
-      const double d = distance_to_boundary(Point(c + offset.x, r + offset.y), boundary);
-      if (d <= radius - 1.0) {
-        EXPECT_EQ(mask.at<std::uint8_t>(r, c), 255) << d << " " << radius;
-      } else if (d >= radius + 1.5) {
-        EXPECT_EQ(mask.at<std::uint8_t>(r, c), 0) << d << " " << radius;
+    ASSERT_EQ(mask.size(), cv::Size(400, 300));
+    int wrong = 0, set = 0;
+    for (int r = 0; r < mask.rows; ++r) {
+      for (int c = 0; c < mask.cols; ++c) {
+        const double d = distance_to_boundary(Point(c + offset.x, r + offset.y), boundary);
+        const bool on = mask.at<std::uint8_t>(r, c) == 255;
+        set += on ? 1 : 0;
+        if (std::abs(d - radius) > 1e-6 && on != (d <= radius)) ++wrong;
+        if (!on) {
+          EXPECT_EQ(mask.at<std::uint8_t>(r, c), 0);
+        }
       }
     }
+    EXPECT_EQ(wrong, 0) << "trial " << trial << " radius " << radius;
+    EXPECT_GT(set, 0);
   }
+  // A single point is a disc; a zero radius keeps the pixels the polyline passes through.
+  cv::Mat disc;
+  draw_band_mask({Point(10, 10)}, {0, 0}, 3.0, {21, 21}, &disc);
+  EXPECT_EQ(cv::countNonZero(disc), 29);  // lattice points within distance 3 of a lattice point
+  draw_band_mask({Point(2, 5), Point(12, 5)}, {0, 0}, 0.0, {21, 21}, &disc);
+  EXPECT_EQ(cv::countNonZero(disc), 11);
   cv::Mat mask;
   draw_band_mask({Point(1e300, -1e300), Point(5, 5)}, {0, 0}, 3.0, {20, 20}, &mask);  // no crash
   draw_band_mask({}, {0, 0}, 3.0, {20, 20}, &mask);
