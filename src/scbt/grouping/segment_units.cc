@@ -1,0 +1,84 @@
+#include "scbt/grouping/segment_units.h"
+
+#include <algorithm>
+
+namespace scbt {
+
+void build_segment_units(const SegmentGraph& graph, const std::vector<char>& skip_edge,
+                         SegmentUnits* units) {
+  const int n = graph.num_vertices();
+  // Detected edges per vertex; a segment whose two ends have no other one becomes a unit.
+  std::vector<int>& partner = units->partner;
+  partner.assign(n, -1);
+  std::vector<int>& detected_degree = units->scratch_count;
+  detected_degree.assign(n, 0);
+  for (int e : graph.detected_edges) {
+    ++detected_degree[graph.edges[e].u];
+    ++detected_degree[graph.edges[e].v];
+  }
+  for (int e : graph.detected_edges) {
+    const int a = graph.edges[e].u, b = graph.edges[e].v;
+    if (a != b && detected_degree[a] == 1 && detected_degree[b] == 1) {
+      partner[a] = b;
+      partner[b] = a;
+    }
+  }
+  std::vector<int>& unit_of = units->unit_of;
+  unit_of.assign(n, -1);
+  int num_units = 0;
+  for (int v = 0; v < n; ++v) {
+    if (unit_of[v] >= 0) continue;
+    unit_of[v] = num_units;
+    if (partner[v] >= 0) unit_of[partner[v]] = num_units;
+    ++num_units;
+  }
+  units->num_units = num_units;
+
+  // Arcs: per unit, the lightest edge to each other unit (`slot` finds a neighbour's arc).
+  std::vector<int>& begin = units->arc_begin;
+  std::vector<SegmentUnits::Arc>& arcs = units->arcs;
+  begin.assign(num_units + 1, 0);
+  arcs.clear();
+  std::vector<int>& slot_stamp = units->scratch_stamp;
+  std::vector<int>& slot = units->scratch_slot;
+  slot_stamp.assign(num_units, -1);
+  slot.resize(num_units);
+  int u = 0;
+  for (int v = 0; v < n; ++v) {
+    if (unit_of[v] != u) continue;  // each unit once, from its first vertex
+    for (const int member : {v, partner[v]}) {
+      if (member < 0) continue;
+      for (int k = graph.adjacency_begin[member]; k < graph.adjacency_begin[member + 1]; ++k) {
+        const SegmentGraph::Incidence& in = graph.adjacency[k];
+        const int target = unit_of[in.vertex];
+        if (skip_edge[in.edge] || target == u) continue;
+        const double weight = graph.edges[in.edge].weight;
+        if (slot_stamp[target] != u) {
+          slot_stamp[target] = u;
+          slot[target] = static_cast<int>(arcs.size());
+          arcs.push_back({target, member, in.vertex, weight});
+        } else if (weight < arcs[slot[target]].weight) {
+          arcs[slot[target]] = {target, member, in.vertex, weight};
+        }
+      }
+    }
+    // By weight, so that a bounded search stops relaxing at the first arc past its bound.
+    std::sort(
+        arcs.begin() + begin[u], arcs.end(),
+        [](const SegmentUnits::Arc& l, const SegmentUnits::Arc& r) { return l.weight < r.weight; });
+    begin[++u] = static_cast<int>(arcs.size());
+  }
+
+  // Both ends keep an arc for every pair of units they share, so each arc has its reverse.
+  units->reverse.resize(arcs.size());
+  for (int x = 0; x < num_units; ++x) {
+    for (int k = begin[x]; k < begin[x + 1]; ++k) {
+      const int y = arcs[k].unit;
+      int j = begin[y];
+      while (arcs[j].unit != x) ++j;
+      units->reverse[k] = j;
+    }
+  }
+}
+
+}  // namespace scbt
