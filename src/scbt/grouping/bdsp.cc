@@ -139,7 +139,7 @@ int CycleSearch::shortest_paths(int tree, int source, int num_thirds, double lim
   return settled;
 }
 
-void CycleSearch::open_seed(int seed, int s1, int s2) {
+void CycleSearch::open_seed(const SegmentGraph& graph, int seed, int s1, int s2) {
   std::vector<int>& unit_of = units_.unit_of;
   std::vector<int>& partner = units_.partner;
   const int a = unit_of[s1];
@@ -161,11 +161,18 @@ void CycleSearch::open_seed(int seed, int s1, int s2) {
   arcs_.resize(units_.arcs.size());
   for (const int s : {s1, s2}) {
     const int part = unit_of[s];
-    unit_begin_[part] = static_cast<int>(arcs_.size());
-    for (int k = vertex_arc_begin_[s]; k < vertex_arc_begin_[s + 1]; ++k) {
-      const VertexArc& arc = vertex_arcs_[k];
-      if (arc.edge != seed) arcs_.push_back({unit_of[arc.vertex], s, arc.vertex, arc.weight});
+    const int first = static_cast<int>(arcs_.size());
+    for (int k = graph.adjacency_begin[s]; k < graph.adjacency_begin[s + 1]; ++k) {
+      const SegmentGraph::Incidence& in = graph.adjacency[k];
+      if (in.edge == seed) continue;
+      // By weight (a handful of arcs), as every unit's.
+      const Arc arc{unit_of[in.vertex], s, in.vertex, graph.edges[in.edge].weight};
+      arcs_.push_back(arc);
+      int at = static_cast<int>(arcs_.size()) - 1;
+      for (; at > first && arcs_[at - 1].weight > arc.weight; --at) arcs_[at] = arcs_[at - 1];
+      arcs_[at] = arc;
     }
+    unit_begin_[part] = first;
     unit_end_[part] = static_cast<int>(arcs_.size());
   }
   // The same edges the other way, from the neighbouring units.
@@ -236,75 +243,6 @@ void CycleSearch::expand_tree(const SegmentGraph& graph, int tree, int root, int
   }
 }
 
-// An edge E = (u, w) of weight c can be left out of every search when, for every seed edge a
-// search blocks, some other path joins u and w at least `margin` shorter than c: then every
-// search reaches w (and u) by a strictly shorter way, so E never sets a final distance or parent
-// and leaving it out changes no result (the removed edges' own replacements only use strictly
-// lighter edges, so removing several is safe too). The margin is far above the rounding error
-// of any path sum. Checked here on two-edge detours u - x - w only: a detour that uses no seed
-// edge, or two whose seed edges differ (each search blocks one seed).
-void CycleSearch::find_dominated_edges(const SegmentGraph& graph, int stride) {
-  const int n = graph.num_vertices();
-  const int m = graph.num_edges();
-  dominated_.assign(m, 0);
-  is_seed_.assign(m, 0);
-  for (size_t i = 0; i < graph.detected_edges.size(); i += stride) {
-    is_seed_[graph.detected_edges[i]] = 1;
-  }
-  double total = 0.0;
-  for (const GraphEdge& e : graph.edges) total += e.weight;
-  const double margin = 1e-9 * (1.0 + total);
-  tolerance_ = margin;
-  // Per neighbour x of u: the lightest edge u - x (for the current u), by stamp.
-  via_stamp_.assign(n, -1);
-  via_weight_.resize(n);
-  via_edge_.resize(n);
-  const auto& adjacency = graph.adjacency;
-  const auto& begin = graph.adjacency_begin;
-  for (int u = 0; u < n; ++u) {
-    for (int k = begin[u]; k < begin[u + 1]; ++k) {
-      const int x = adjacency[k].vertex;
-      const int e = adjacency[k].edge;
-      const double weight = graph.edges[e].weight;
-      if (via_stamp_[x] != u || weight < via_weight_[x] ||
-          (weight == via_weight_[x] && is_seed_[via_edge_[x]] && !is_seed_[e])) {
-        via_stamp_[x] = u;
-        via_weight_[x] = weight;
-        via_edge_[x] = e;
-      }
-    }
-    for (int k = begin[u]; k < begin[u + 1]; ++k) {
-      const int w = adjacency[k].vertex;
-      const int edge = adjacency[k].edge;
-      const double c = graph.edges[edge].weight;
-      if (w < u || !(c > margin)) continue;  // each edge once, from its lower end
-      // Seed edges of the detours found so far: -1 = a detour without any was found.
-      int first_a = -2, first_b = -2;
-      bool dominated = false;
-      for (int j = begin[w]; j < begin[w + 1] && !dominated; ++j) {
-        const int x = adjacency[j].vertex;
-        const int b = adjacency[j].edge;
-        if (x == u || via_stamp_[x] != u || b == edge) continue;
-        const int a = via_edge_[x];
-        if (a == edge || !(via_weight_[x] + graph.edges[b].weight < c - margin)) continue;
-        const int seed_a = is_seed_[a] ? a : -1;
-        const int seed_b = is_seed_[b] ? b : -1;
-        if (seed_a < 0 && seed_b < 0) {
-          dominated = true;
-        } else if (first_a == -2) {
-          first_a = seed_a;
-          first_b = seed_b;
-        } else {
-          // Two detours that no single blocked seed edge both cuts.
-          const auto shares = [&](int s) { return s >= 0 && (s == first_a || s == first_b); };
-          dominated = !shares(seed_a) && !shares(seed_b);
-        }
-      }
-      dominated_[edge] = dominated;
-    }
-  }
-}
-
 void CycleSearch::run(const SegmentGraph& graph, const BdspOptions& options,
                       const CandidateGate* gate) {
   const int n = graph.num_vertices();
@@ -322,24 +260,23 @@ void CycleSearch::run(const SegmentGraph& graph, const BdspOptions& options,
   found_.clear();
   seed_source_.clear();
 
-  // The graph once, in the layouts the searches read: each vertex's arcs sorted by weight and
-  // the units, both without the edges no search can use (find_dominated_edges).
-  find_dominated_edges(graph, stride);
-  vertex_arc_begin_.assign(n + 1, 0);
-  vertex_arcs_.clear();
-  for (int u = 0; u < n; ++u) {
-    for (int k = graph.adjacency_begin[u]; k < graph.adjacency_begin[u + 1]; ++k) {
-      const SegmentGraph::Incidence& in = graph.adjacency[k];
-      if (!dominated_[in.edge]) {
-        vertex_arcs_.push_back({in.vertex, in.edge, graph.edges[in.edge].weight});
-      }
-    }
-    vertex_arc_begin_[u + 1] = static_cast<int>(vertex_arcs_.size());
-    std::sort(vertex_arcs_.begin() + vertex_arc_begin_[u], vertex_arcs_.end(),
-              [](const VertexArc& l, const VertexArc& r) { return l.weight < r.weight; });
-  }
-  build_segment_units(graph, dominated_, &units_);
+  // The graph once, in the layout the searches read: contracted, without the arcs no search
+  // needs. The margin of a useless arc is far above the rounding error of any path sum.
+  double total = 0.0;
+  for (const GraphEdge& e : graph.edges) total += e.weight;
+  tolerance_ = 1e-9 * (1.0 + total);
+  build_segment_units(graph, &units_);
   num_units_ = units_.num_units;
+  // Each seed opens the units of its two ends (open_seed).
+  opened_by_.assign(num_units_, -1);
+  for (int i = 0; i < num_detected; i += stride) {
+    const int seed = graph.detected_edges[i];
+    for (const int end : {graph.edges[seed].u, graph.edges[seed].v}) {
+      int& opener = opened_by_[units_.unit_of[end]];
+      opener = opener == -1 || opener == seed ? seed : -2;
+    }
+  }
+  drop_dominated_arcs(opened_by_, tolerance_, &units_);
   const int num_ids = num_units_ + 1;  // and the spare id of s2's unit during a seed
   arcs_ = units_.arcs;
   unit_begin_.assign(units_.arc_begin.begin(), units_.arc_begin.end() - 1);
@@ -386,7 +323,7 @@ void CycleSearch::run(const SegmentGraph& graph, const BdspOptions& options,
     seed_source_.push_back(s2);
     int* parent1 = parents_.data() + static_cast<size_t>(2 * slot) * n;
     int* parent2 = parent1 + n;
-    open_seed(seed, s1, s2);
+    open_seed(graph, seed, s1, s2);
     // The seed's gap bound (CandidateGate in bdsp.h); the slack covers rounding.
     double limit = kInfinity;
     if (gate != nullptr && best_cost < kInfinity) {

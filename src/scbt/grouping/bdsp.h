@@ -72,8 +72,9 @@ struct CandidateSummary {
 //    (precomputed per seed), plus a walk above it cut short by a bound on d1 - d2 (the paths can
 //    meet again only where rounded path lengths tie differently from the two roots);
 //  - Dijkstra keeps its frontier (a handful of nodes) as an unordered array of 128-bit
-//    (distance, id) keys scanned for the least, stops once every third vertex is settled, and
-//    skips edges that a strictly shorter two-edge detour makes useless to every search;
+//    (distance, id) keys scanned for the least and stops once every third vertex is settled;
+//  - arcs that a strictly shorter two-arc detour makes useless to every search are left out
+//    (drop_dominated_arcs);
 //  - nothing is allocated once the buffers have grown to the graph's size.
 // options.generic_graph is ignored here. Not thread-safe; use one object per thread.
 //
@@ -122,11 +123,6 @@ class CycleSearch {
 
  private:
   using Arc = SegmentUnits::Arc;
-  struct VertexArc {
-    int vertex;
-    int edge;
-    double weight;
-  };
   struct Found {
     int seed_slot;  // index of the seed's trees in parents_
     int meeting;    // where the path from s1 meets the path back to s2
@@ -140,32 +136,25 @@ class CycleSearch {
   // Splits the seed's unit into s1's and s2's (s2's takes the spare id num_units), blocks every
   // arc into them and gives both the arcs of their own vertex, the seed edge left out; the
   // arcs into them go on extra lists of their neighbours. close_seed undoes it.
-  void open_seed(int seed, int s1, int s2);
+  void open_seed(const SegmentGraph& graph, int seed, int s1, int s2);
   void close_seed(int s1, int s2);
   // The graph-vertex tree of a search: parents (into `parent`), each unit's entry vertex and
   // root-to-vertex shoelace sums, from the unit tree.
   void expand_tree(const SegmentGraph& graph, int tree, int root, int settled, int* parent);
-  void find_dominated_edges(const SegmentGraph& graph, int stride);
 
   int num_vertices_ = 0;
   int num_units_ = 0;  // units of the contraction; one more id is s2's during a seed
   SegmentUnits units_;
-  // Non-dominated arcs of each graph vertex, sorted by weight (the seed's units are built of
-  // them).
-  std::vector<int> vertex_arc_begin_;
-  std::vector<VertexArc> vertex_arcs_;
   // units_.arcs, then the open seed's arcs: from its two units, then into them.
   std::vector<Arc> arcs_;
   std::vector<int> unit_begin_, unit_end_;  // each unit's arcs in arcs_
   // Arcs into the open seed's units, per unit: a chain from extra_head_ through extra_next_.
   std::vector<int> extra_head_, extra_next_;
+  std::vector<int> opened_by_;  // per unit: the seed that opens it, -1 none, -2 several
   std::vector<char> unit_third_;
   std::vector<char> wanted_;  // units of third vertices settled by the first tree
   int num_third_units_ = 0;
   std::vector<double> seed_limits_;
-  std::vector<char> is_seed_, dominated_;  // per edge
-  std::vector<int> via_stamp_, via_edge_;
-  std::vector<double> via_weight_;
   // Per tree, per unit.
   std::vector<double> distance_[2];
   std::vector<int> parent_arc_[2];

@@ -4,8 +4,26 @@
 
 namespace scbt {
 
-void build_segment_units(const SegmentGraph& graph, const std::vector<char>& skip_edge,
-                         SegmentUnits* units) {
+namespace {
+
+// Both ends keep an arc for every pair of units they share, so each arc has its reverse.
+void find_reverse_arcs(SegmentUnits* units) {
+  const std::vector<int>& begin = units->arc_begin;
+  const std::vector<SegmentUnits::Arc>& arcs = units->arcs;
+  units->reverse.resize(arcs.size());
+  for (int x = 0; x < units->num_units; ++x) {
+    for (int k = begin[x]; k < begin[x + 1]; ++k) {
+      const int y = arcs[k].unit;
+      int j = begin[y];
+      while (arcs[j].unit != x) ++j;
+      units->reverse[k] = j;
+    }
+  }
+}
+
+}  // namespace
+
+void build_segment_units(const SegmentGraph& graph, SegmentUnits* units) {
   const int n = graph.num_vertices();
   // Detected edges per vertex; a segment whose two ends have no other one becomes a unit.
   std::vector<int>& partner = units->partner;
@@ -51,7 +69,7 @@ void build_segment_units(const SegmentGraph& graph, const std::vector<char>& ski
       for (int k = graph.adjacency_begin[member]; k < graph.adjacency_begin[member + 1]; ++k) {
         const SegmentGraph::Incidence& in = graph.adjacency[k];
         const int target = unit_of[in.vertex];
-        if (skip_edge[in.edge] || target == u) continue;
+        if (target == u) continue;
         const double weight = graph.edges[in.edge].weight;
         if (slot_stamp[target] != u) {
           slot_stamp[target] = u;
@@ -69,16 +87,62 @@ void build_segment_units(const SegmentGraph& graph, const std::vector<char>& ski
     begin[++u] = static_cast<int>(arcs.size());
   }
 
-  // Both ends keep an arc for every pair of units they share, so each arc has its reverse.
-  units->reverse.resize(arcs.size());
+  find_reverse_arcs(units);
+}
+
+void drop_dominated_arcs(const std::vector<int>& opened_by, double margin, SegmentUnits* units) {
+  const int num_units = units->num_units;
+  std::vector<int>& begin = units->arc_begin;
+  std::vector<SegmentUnits::Arc>& arcs = units->arcs;
+  // Per neighbour z of the current unit x: the weight of x - z and the vertex of z it reaches,
+  // by stamp.
+  std::vector<int>& stamp = units->scratch_stamp;
+  std::vector<int>& dropped = units->scratch_count;
+  stamp.assign(num_units, -1);
+  dropped.assign(arcs.size(), 0);
+  std::vector<double>& weight_to = units->scratch_weight;
+  weight_to.resize(num_units);
+  std::vector<int>& reaches = units->scratch_slot;
+  reaches.resize(num_units);
   for (int x = 0; x < num_units; ++x) {
     for (int k = begin[x]; k < begin[x + 1]; ++k) {
+      stamp[arcs[k].unit] = x;
+      weight_to[arcs[k].unit] = arcs[k].weight;
+      reaches[arcs[k].unit] = arcs[k].to;
+    }
+    for (int k = begin[x]; k < begin[x + 1]; ++k) {
       const int y = arcs[k].unit;
-      int j = begin[y];
-      while (arcs[j].unit != x) ++j;
-      units->reverse[k] = j;
+      const double c = arcs[k].weight;
+      if (y < x || !(c > margin)) continue;  // each pair once
+      int first = -3;                        // the opener of the first detour found (-3: none yet)
+      bool dominated = false;
+      for (int j = begin[y]; j < begin[y + 1] && !dominated; ++j) {
+        const int z = arcs[j].unit;
+        if (z == x || stamp[z] != x || !(weight_to[z] + arcs[j].weight < c - margin)) continue;
+        const int opener = reaches[z] == arcs[j].to ? -1 : opened_by[z];
+        if (opener == -1) {
+          dominated = true;
+        } else if (opener >= 0) {
+          if (first == -3) first = opener;
+          dominated = opener != first;
+        }
+      }
+      if (dominated) dropped[k] = dropped[units->reverse[k]] = 1;
     }
   }
+  // Compact every unit's arcs in place (their order by weight kept).
+  int kept = 0;
+  for (int x = 0; x < num_units; ++x) {
+    const int end = begin[x + 1];
+    int k = begin[x];
+    begin[x] = kept;
+    for (; k < end; ++k) {
+      if (!dropped[k]) arcs[kept++] = arcs[k];
+    }
+  }
+  begin[num_units] = kept;
+  arcs.resize(kept);
+  find_reverse_arcs(units);
 }
 
 }  // namespace scbt

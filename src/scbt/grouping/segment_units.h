@@ -32,10 +32,21 @@ struct SegmentUnits {
 
   // Buffers reused by the next build (nothing is allocated once they have grown).
   std::vector<int> scratch_count, scratch_stamp, scratch_slot;
+  std::vector<double> scratch_weight;
 };
 
-// Contracts `graph`, leaving out the edges with skip_edge[e] set (edges no search needs).
-void build_segment_units(const SegmentGraph& graph, const std::vector<char>& skip_edge,
-                         SegmentUnits* units);
+// Contracts `graph` into `units` (its buffers reused).
+void build_segment_units(const SegmentGraph& graph, SegmentUnits* units);
+
+// Leaves out the arcs X - Y that no search needs: those with a detour X - Z - Y shorter by more
+// than `margin` (far above rounding) that every search can take. A search may "open" units
+// (BDSP splits its seed's unit and rebuilds its arcs): opened_by[Z] is -1 for a unit no search
+// opens, the one search that opens it, or -2 for several. A detour whose two arcs touch the same
+// vertex of Z stays whole in an opened Z (its arcs are that vertex's); another one through a
+// unit opened by one search serves every other search, and two such detours opened by
+// different searches serve all.
+// Every search then reaches each unit by a strictly shorter way than a left-out arc, so its
+// distances and trees do not change.
+void drop_dominated_arcs(const std::vector<int>& opened_by, double margin, SegmentUnits* units);
 
 }  // namespace scbt
