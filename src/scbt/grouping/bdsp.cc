@@ -49,7 +49,7 @@ Polygon candidate_polygon(const SegmentGraph& graph, const CycleCandidate& candi
 
 namespace {
 
-constexpr int kUnreached = -2;
+double cross(const Point& p, const Point& q) { return p.x * q.y - q.x * p.y; }
 
 // Frontier keys: (distance, vertex id) in one unsigned 128-bit integer, so that the order of
 // ShortestPaths (distance first, then id) is a single comparison. Distances are non-negative,
@@ -68,7 +68,7 @@ int key_vertex(FrontierKey key) { return static_cast<int>(static_cast<uint32_t>(
 
 // Settles units in (distance, unit id) order and relaxes each unit's arcs (then its extra arcs
 // into the open seed's units) with a strict comparison: a shortest-path tree of the units, so of
-// the graph vertices (expand_tree), equal to the vertex search's but where path lengths tie.
+// the graph vertices (entry_vertex), equal to the vertex search's but where path lengths tie.
 int CycleSearch::shortest_paths(int tree, int source, int num_thirds, double limit, int stamp) {
   double* distance = distance_[tree].data();
   int* parent = parent_arc_[tree].data();
@@ -206,39 +206,95 @@ void CycleSearch::close_seed(int s1, int s2) {
   }
 }
 
-// Each unit's entry vertex hangs from the vertex its parent arc leaves; the other end of a
-// segment unit hangs from the entry (by the zero-weight segment).
-void CycleSearch::expand_tree(const SegmentGraph& graph, int tree, int root, int settled,
-                              int* parent) {
-  const int* order = order_[tree].data();
-  const int* parent_arc = parent_arc_[tree].data();
+// The graph-vertex trees: each unit's entry vertex (where its parent arc arrives) hangs from the
+// vertex the arc leaves, the other end of a segment unit from the entry (by the zero-weight
+// segment). Parents settle before children, so one pass in settle order fills each tree.
+int CycleSearch::entry_vertex(int tree, int k, int root, int* parent) const {
+  if (k == 0) {
+    parent[root] = -1;
+    return root;
+  }
+  const Arc& arc = arcs_[parent_arc_[tree][order_[tree][k]]];
+  parent[arc.to] = arc.from;
+  return arc.to;
+}
+
+// Second tree: parents, shoelace sums and the pre-order interval [enter, enter + size) of each
+// vertex, from subtree sizes (a unit's vertices after its parent's, its other end after its
+// entry). Vertices outside the tree get size 0.
+void CycleSearch::second_tree_pass(const Point* points, int s2, int settled, int* parent) {
+  const int* order = order_[1].data();
+  const int* parent_arc = parent_arc_[1].data();
   const int* partner = units_.partner.data();
-  int* entry = entry_[tree].data();
-  double* sum = shoelace_[tree].data();
-  // Coordinates relative to s1 (smaller terms).
-  const Point origin = graph.vertices[seed_source_[seed_source_.size() - 2]];
-  const auto cross = [&](int from, int to) {
-    const Point p = graph.vertices[from] - origin;
-    const Point q = graph.vertices[to] - origin;
-    return p.x * q.y - q.x * p.y;
-  };
+  int* size = size_.data();
+  int* enter = enter_.data();
+  int* next = next_.data();
+  double* sum = shoelace_[1].data();
+  std::fill(size_.begin(), size_.end(), 0);
+  for (int k = settled - 1; k >= 0; --k) {
+    const Arc* arc = k > 0 ? &arcs_[parent_arc[order[k]]] : nullptr;
+    const int e = k > 0 ? arc->to : s2;
+    const int o = partner[e];
+    if (o >= 0) size[e] += ++size[o];
+    ++size[e];
+    if (k > 0) size[arc->from] += size[e];
+  }
   for (int k = 0; k < settled; ++k) {
-    const int u = order[k];
-    int e = root;
-    if (k == 0) {
-      parent[e] = -1;
+    const int e = entry_vertex(1, k, s2, parent);
+    const int p = parent[e];
+    if (p < 0) {
       sum[e] = 0.0;
+      enter[e] = 0;
     } else {
-      const Arc& arc = arcs_[parent_arc[u]];
-      e = arc.to;
-      parent[e] = arc.from;
-      sum[e] = sum[arc.from] + cross(arc.from, e);
+      sum[e] = sum[p] + cross(points[p], points[e]);
+      enter[e] = next[p];
+      next[p] += size[e];
     }
-    entry[u] = e;
+    next[e] = enter[e] + 1;
     const int o = partner[e];
     if (o >= 0) {
       parent[o] = e;
-      sum[o] = sum[e] + cross(e, o);
+      sum[o] = sum[e] + cross(points[e], points[o]);
+      enter[o] = next[e];
+      next[e] += size[o];
+      next[o] = enter[o] + 1;
+    }
+  }
+}
+
+// First tree (after the second): parents, shoelace sums, bound[v] (the largest d1 - d2 on the
+// path s1 ... v) and fork[v] (see the walk in run).
+void CycleSearch::first_tree_pass(const Point* points, int s1, int settled, int slot, int* parent,
+                                  const int* parent2) {
+  const int* partner = units_.partner.data();
+  const double* d1 = distance_[0].data();
+  const double* d2 = distance_[1].data();
+  const int* order = order_[0].data();
+  const int* settled_by2 = settled_[1].data();
+  double* sum = shoelace_[0].data();
+  double* bound = bound_.data();
+  int* fork = fork_.data();
+  for (int k = 0; k < settled; ++k) {
+    const int u = order[k];
+    const int e = entry_vertex(0, k, s1, parent);
+    const int p = parent[e];
+    const bool in_second = settled_by2[u] == slot;
+    const double difference = d1[u] - d2[u];
+    if (p < 0) {
+      sum[e] = 0.0;
+      bound[e] = difference;
+      fork[e] = e;
+    } else {
+      sum[e] = sum[p] + cross(points[p], points[e]);
+      bound[e] = std::max(bound[p], difference);
+      fork[e] = in_second && parent2[e] == p ? fork[p] : e;
+    }
+    const int o = partner[e];
+    if (o >= 0) {
+      parent[o] = e;
+      sum[o] = sum[e] + cross(points[e], points[o]);
+      bound[o] = bound[e];
+      fork[o] = in_second && parent2[o] == e ? fork[e] : o;
     }
   }
 }
@@ -299,10 +355,10 @@ void CycleSearch::run(const SegmentGraph& graph, const BdspOptions& options,
     parent_arc_[tree].resize(num_ids);
     order_[tree].resize(num_ids);
     settled_[tree].assign(num_ids, -1);
-    entry_[tree].resize(num_ids);
     shoelace_[tree].resize(n);
   }
   bound_.resize(n);
+  points_.resize(n);
   fork_.resize(n);
   enter_.resize(n);
   next_.resize(n);
@@ -341,66 +397,16 @@ void CycleSearch::run(const SegmentGraph& graph, const BdspOptions& options,
     }
     const int settled2 = shortest_paths(1, unit_of[s2], wanted, limit, slot);
     for (int k = 0; k < settled1; ++k) wanted_[order_[0][k]] = 0;
-    expand_tree(graph, 0, s1, settled1, parent1);
-    expand_tree(graph, 1, s2, settled2, parent2);
+    // Coordinates relative to s1 (smaller shoelace terms).
+    const Point origin = graph.vertices[s1];
+    for (int v = 0; v < n; ++v) points_[v] = graph.vertices[v] - origin;
+    second_tree_pass(points_.data(), s2, settled2, parent2);
+    first_tree_pass(points_.data(), s1, settled1, slot, parent1, parent2);
 
     const double* d1 = distance_[0].data();
     const double* d2 = distance_[1].data();
     const int* settled_by1 = settled_[0].data();
     const int* settled_by2 = settled_[1].data();
-    // bound[v]: the largest d1 - d2 on the first tree's path s1 ... v (see the walk below).
-    {
-      const int* order = order_[0].data();
-      const int* entry = entry_[0].data();
-      double* bound = bound_.data();
-      int* fork = fork_.data();
-      for (int k = 0; k < settled1; ++k) {
-        const int u = order[k];
-        const int e = entry[u];
-        const int p = parent1[e];
-        const bool in_second = settled_by2[u] == slot;
-        const double difference = d1[u] - d2[u];
-        bound[e] = p < 0 ? difference : std::max(bound[p], difference);
-        fork[e] = p >= 0 && in_second && parent2[e] == p ? fork[p] : e;
-        const int o = partner[e];
-        if (o >= 0) {
-          bound[o] = bound[e];
-          fork[o] = in_second && parent2[o] == e ? fork[e] : o;
-        }
-      }
-    }
-    // Pre-order interval [enter, enter + size) of each vertex of the second tree, from subtree
-    // sizes (a unit's vertices come after its parent's, its other end after its entry).
-    {
-      const int* order = order_[1].data();
-      const int* entry = entry_[1].data();
-      std::fill(size_.begin(), size_.end(), 0);
-      for (int k = settled2 - 1; k >= 0; --k) {
-        const int e = entry[order[k]];
-        const int o = partner[e];
-        if (o >= 0) size_[e] += ++size_[o];
-        ++size_[e];
-        if (k > 0) size_[parent2[e]] += size_[e];
-      }
-      for (int k = 0; k < settled2; ++k) {
-        const int e = entry[order[k]];
-        if (k == 0) {
-          enter_[e] = 0;
-        } else {
-          const int p = parent2[e];
-          enter_[e] = next_[p];
-          next_[p] += size_[e];
-        }
-        next_[e] = enter_[e] + 1;
-        const int o = partner[e];
-        if (o >= 0) {
-          enter_[o] = next_[e];
-          next_[e] += size_[o];
-          next_[o] = enter_[o] + 1;
-        }
-      }
-    }
-
     const double* sum1 = shoelace_[0].data();
     const double* sum2 = shoelace_[1].data();
     const int* enter = enter_.data();

@@ -138,12 +138,16 @@ class CycleSearch {
   // arcs into them go on extra lists of their neighbours. close_seed undoes it.
   void open_seed(const SegmentGraph& graph, int seed, int s1, int s2);
   void close_seed(int s1, int s2);
-  // The graph-vertex tree of a search: parents (into `parent`), each unit's entry vertex and
-  // root-to-vertex shoelace sums, from the unit tree.
-  void expand_tree(const SegmentGraph& graph, int tree, int root, int settled, int* parent);
+  // The vertex by which the k-th unit settled in `tree` is entered (`root` for the first), its
+  // parent set in `parent`.
+  int entry_vertex(int tree, int k, int root, int* parent) const;
+  void second_tree_pass(const Point* points, int s2, int settled, int* parent);
+  void first_tree_pass(const Point* points, int s1, int settled, int slot, int* parent,
+                       const int* parent2);
 
   int num_vertices_ = 0;
-  int num_units_ = 0;  // units of the contraction; one more id is s2's during a seed
+  int num_units_ = 0;          // units of the contraction; one more id is s2's during a seed
+  std::vector<Point> points_;  // vertex positions relative to the current seed's s1
   SegmentUnits units_;
   // units_.arcs, then the open seed's arcs: from its two units, then into them.
   std::vector<Arc> arcs_;
@@ -160,7 +164,6 @@ class CycleSearch {
   std::vector<int> parent_arc_[2];
   std::vector<int> order_[2];
   std::vector<int> settled_[2];  // the seed slot that last settled the unit
-  std::vector<int> entry_[2];    // the vertex a unit's path enters by
   // Per tree, per graph vertex: root-to-vertex sums of cross(parent, child).
   std::vector<double> shoelace_[2];
   std::vector<int> enter_, size_, next_;  // pre-order interval of the second (vertex) tree
