@@ -370,7 +370,6 @@ void CycleSearch::run(const SegmentGraph& graph, const BdspOptions& options,
   parents_.resize(static_cast<size_t>(2) * num_seeds * n);
 
   const std::vector<int>& unit_of = units_.unit_of;
-  const std::vector<int>& partner = units_.partner;
   for (int i = 0, slot = 0; i < num_detected; i += stride, ++slot) {
     const int seed = graph.detected_edges[i];
     const int s1 = graph.edges[seed].u;
