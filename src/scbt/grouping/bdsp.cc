@@ -90,8 +90,11 @@ int CycleSearch::shortest_paths(int tree, int source, int num_thirds, double lim
   position[source] = 0;
   int settled = 0, thirds_left = num_thirds;
   int size = 1;
-  // Without a branch: whether an arc improves its end is close to a coin toss. A unit not in
-  // the frontier goes in slot `size` (only kept if it improved).
+  // A unit not in the frontier goes in slot `size` (only kept if it improved). Written as
+  // selects, but the compiler branches on `better`, which is right: about a quarter of the arcs
+  // improve on the dataset (half reach settled units), and a version forced branch-free with
+  // masks measured ~10 % slower. Sorted arcs also help (unsorted, with a per-arc limit test:
+  // ~25 % slower).
   const auto relax = [&](double d, int k) {
     const double candidate = d + arcs[k].weight;
     const int w = arcs[k].unit;
@@ -107,7 +110,7 @@ int CycleSearch::shortest_paths(int tree, int source, int num_thirds, double lim
     size += better & (at < 0);
   };
   while (size > 0) {
-    // The frontier is small (a handful of units on these graphs): an unordered array scanned
+    // The frontier is small (about a dozen units on these graphs): an unordered array scanned
     // for its least (distance, id) key beats a heap's unpredictable branches.
     int best = 0;
     FrontierKey least = frontier[0];

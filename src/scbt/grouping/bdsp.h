@@ -71,7 +71,7 @@ struct CandidateSummary {
 //  - the meeting vertex is where the two trees' parents first differ up from the third vertex
 //    (precomputed per seed), plus a walk above it cut short by a bound on d1 - d2 (the paths can
 //    meet again only where rounded path lengths tie differently from the two roots);
-//  - Dijkstra keeps its frontier (a handful of nodes) as an unordered array of 128-bit
+//  - Dijkstra keeps its frontier (about a dozen nodes) as an unordered array of 128-bit
 //    (distance, id) keys scanned for the least and stops once every third vertex is settled;
 //  - arcs that a strictly shorter two-arc detour makes useless to every search are left out
 //    (drop_dominated_arcs);
@@ -84,10 +84,10 @@ struct CandidateSummary {
 //    kept from seeds 0..i-1 (infinity before any), and the seed's gap bound is
 //    G_i = (1 + tolerance) Γ_i max_area() (1 + 1e-9) (seed_limits()[i]; infinity while Γ_i is).
 //    A near tie has gap = Γ area <= (1 + tolerance) Γ* max_area() <= G_i.
-//  - Both Dijkstras of seed i settle only vertices within G_i of their root: an arc u -> w is
-//    not relaxed when d(u) + weight > G_i (arcs are sorted by weight, so the loop ends there).
+//  - Both Dijkstras of seed i settle only nodes within G_i of their root: an arc u -> w is not
+//    relaxed when d(u) + weight > G_i (arcs are sorted by weight, so the loop ends there).
 //    Distances and parents of the vertices within G_i are the unbounded search's, bit for bit
-//    (ties included).
+//    (ties included: the frontier order is (distance, id), whatever was left out).
 //  - So seed i yields the unbounded candidates whose third vertex lies within G_i of both s1
 //    and s2 (the repeat-of-a-cycle skip then only sees those thirds), filtered: a candidate is
 //    kept iff it is admissible and Γ <= Γ_best (1 + tolerance), Γ_best the least admissible Γ
