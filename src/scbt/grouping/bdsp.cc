@@ -212,7 +212,7 @@ void CycleSearch::close_seed(int s1, int s2) {
 // The graph-vertex trees: each unit's entry vertex (where its parent arc arrives) hangs from the
 // vertex the arc leaves, the other end of a segment unit from the entry (by the zero-weight
 // segment). Parents settle before children, so one pass in settle order fills each tree.
-int CycleSearch::entry_vertex(int tree, int k, int root, int* parent) const {
+inline int CycleSearch::entry_vertex(int tree, int k, int root, int* parent) const {
   if (k == 0) {
     parent[root] = -1;
     return root;

@@ -6,7 +6,8 @@ namespace scbt {
 
 namespace {
 
-// Both ends keep an arc for every pair of units they share, so each arc has its reverse.
+// Both ends keep an arc for every pair of units they share, so each arc has its reverse: found
+// from the lower unit's side, set both ways.
 void find_reverse_arcs(SegmentUnits* units) {
   const std::vector<int>& begin = units->arc_begin;
   const std::vector<SegmentUnits::Arc>& arcs = units->arcs;
@@ -14,9 +15,11 @@ void find_reverse_arcs(SegmentUnits* units) {
   for (int x = 0; x < units->num_units; ++x) {
     for (int k = begin[x]; k < begin[x + 1]; ++k) {
       const int y = arcs[k].unit;
+      if (y < x) continue;
       int j = begin[y];
       while (arcs[j].unit != x) ++j;
       units->reverse[k] = j;
+      units->reverse[j] = k;
     }
   }
 }
@@ -113,8 +116,10 @@ void drop_dominated_arcs(const std::vector<int>& opened_by, double margin, Segme
     for (int k = begin[x]; k < begin[x + 1]; ++k) {
       const int y = arcs[k].unit;
       const double c = arcs[k].weight;
-      if (y < x || !(c > margin)) continue;  // each pair once
-      int first = -3;                        // the opener of the first detour found (-3: none yet)
+      // Each pair once; a detour weighs at least the lightest arcs of x and y (first in their
+      // sorted lists) together.
+      if (y < x || !(arcs[begin[x]].weight + arcs[begin[y]].weight < c - margin)) continue;
+      int first = -3;  // the opener of the first detour found (-3: none yet)
       bool dominated = false;
       for (int j = begin[y]; j < begin[y + 1] && !dominated; ++j) {
         const int z = arcs[j].unit;
@@ -130,19 +135,25 @@ void drop_dominated_arcs(const std::vector<int>& opened_by, double margin, Segme
       if (dominated) dropped[k] = dropped[units->reverse[k]] = 1;
     }
   }
-  // Compact every unit's arcs in place (their order by weight kept).
+  // Compact every unit's arcs in place (their order by weight kept); `dropped` becomes each
+  // kept arc's new index, by which the reverse indices follow.
+  std::vector<int>& reverse = units->reverse;
   int kept = 0;
   for (int x = 0; x < num_units; ++x) {
     const int end = begin[x + 1];
     int k = begin[x];
     begin[x] = kept;
     for (; k < end; ++k) {
-      if (!dropped[k]) arcs[kept++] = arcs[k];
+      if (dropped[k]) continue;
+      dropped[k] = kept;
+      arcs[kept] = arcs[k];
+      reverse[kept++] = reverse[k];
     }
   }
   begin[num_units] = kept;
   arcs.resize(kept);
-  find_reverse_arcs(units);
+  reverse.resize(kept);
+  for (int& r : reverse) r = dropped[r];
 }
 
 }  // namespace scbt
