@@ -51,18 +51,19 @@ namespace {
 
 double cross(const Point& p, const Point& q) { return p.x * q.y - q.x * p.y; }
 
-// Frontier keys: (distance, vertex id) in one unsigned 128-bit integer, so that the order of
-// ShortestPaths (distance first, then id) is a single comparison. Distances are non-negative,
-// and the bits of non-negative doubles order as the doubles do.
+// Frontier keys: (distance, unit id) in one unsigned 128-bit integer, so that the settle order
+// (distance first, then id: whatever else the frontier holds, so a bounded search settles what
+// it keeps as the unbounded one does) is a single comparison. Distances are non-negative, and
+// the bits of non-negative doubles order as the doubles do.
 using FrontierKey = unsigned __int128;
 
-FrontierKey frontier_key(double distance, int vertex) {
+FrontierKey frontier_key(double distance, int unit) {
   uint64_t bits;
   std::memcpy(&bits, &distance, sizeof bits);
-  return (static_cast<FrontierKey>(bits) << 32) | static_cast<uint32_t>(vertex);
+  return (static_cast<FrontierKey>(bits) << 32) | static_cast<uint32_t>(unit);
 }
 
-int key_vertex(FrontierKey key) { return static_cast<int>(static_cast<uint32_t>(key)); }
+int key_unit(FrontierKey key) { return static_cast<int>(static_cast<uint32_t>(key)); }
 
 }  // namespace
 
@@ -119,10 +120,10 @@ int CycleSearch::shortest_paths(int tree, int source, int num_thirds, double lim
       least = less ? frontier[k] : least;
       best = less ? k : best;
     }
-    const int u = key_vertex(least);
+    const int u = key_unit(least);
     const FrontierKey moved = frontier[--size];
     frontier[best] = moved;
-    position[key_vertex(moved)] = best;
+    position[key_unit(moved)] = best;
     position[u] = -1;
     order[settled++] = u;
     settled_by[u] = stamp;
@@ -138,7 +139,7 @@ int CycleSearch::shortest_paths(int tree, int source, int num_thirds, double lim
       if (d + arcs[k].weight <= limit) relax(d, k);
     }
   }
-  for (int k = 0; k < size; ++k) position[key_vertex(frontier[k])] = -1;
+  for (int k = 0; k < size; ++k) position[key_unit(frontier[k])] = -1;
   return settled;
 }
 
