@@ -49,37 +49,40 @@ Polygon candidate_polygon(const SegmentGraph& graph, const CycleCandidate& candi
 
 namespace {
 
-constexpr int kUnreached = -2;
+double cross(const Point& p, const Point& q) { return p.x * q.y - q.x * p.y; }
 
-// Frontier keys: (distance, vertex id) in one unsigned 128-bit integer, so that the order of
-// ShortestPaths (distance first, then id) is a single comparison. Distances are non-negative,
-// and the bits of non-negative doubles order as the doubles do.
+// Frontier keys: (distance, unit id) in one unsigned 128-bit integer, so that the settle order
+// (distance first, then id: whatever else the frontier holds, so a bounded search settles what
+// it keeps as the unbounded one does) is a single comparison. Distances are non-negative, and
+// the bits of non-negative doubles order as the doubles do.
 using FrontierKey = unsigned __int128;
 
-FrontierKey frontier_key(double distance, int vertex) {
+FrontierKey frontier_key(double distance, int unit) {
   uint64_t bits;
   std::memcpy(&bits, &distance, sizeof bits);
-  return (static_cast<FrontierKey>(bits) << 32) | static_cast<uint32_t>(vertex);
+  return (static_cast<FrontierKey>(bits) << 32) | static_cast<uint32_t>(unit);
 }
 
-int key_vertex(FrontierKey key) { return static_cast<int>(static_cast<uint32_t>(key)); }
+int key_unit(FrontierKey key) { return static_cast<int>(static_cast<uint32_t>(key)); }
 
 }  // namespace
 
-// Settles vertices in the order ShortestPaths::run does ((distance, id), the only order of a
-// correct Dijkstra with that tie rule) and relaxes each vertex's arcs in the same order with the
-// same strict comparison, so the same distances (bit for bit) and parents (ties included). The
-// blocked edge's arcs weigh infinity meanwhile.
-int CycleSearch::shortest_paths(int tree, int source, int* parent, int num_thirds, double limit) {
-  const int n = num_vertices_;
+// Settles units in (distance, unit id) order and relaxes each unit's arcs (then its extra arcs
+// into the open seed's units) with a strict comparison: a shortest-path tree of the units, so of
+// the graph vertices (entry_vertex), equal to the vertex search's but where path lengths tie.
+int CycleSearch::shortest_paths(int tree, int source, int num_thirds, double limit, int stamp) {
   double* distance = distance_[tree].data();
+  int* parent = parent_arc_[tree].data();
   int* order = order_[tree].data();
-  std::fill(distance, distance + n, std::numeric_limits<double>::infinity());
-  std::fill(parent, parent + n, kUnreached);
+  int* settled_by = settled_[tree].data();
+  std::fill(distance, distance + num_units_ + 1, std::numeric_limits<double>::infinity());
 
   const Arc* arcs = arcs_.data();
-  const int* begin = arc_begin_.data();
-  const char* is_third = tree == 0 ? is_third_.data() : wanted_.data();
+  const int* begin = unit_begin_.data();
+  const int* end_of = unit_end_.data();
+  const int* extra_head = extra_head_.data();
+  const int* extra_next = extra_next_.data();
+  const char* is_third = tree == 0 ? unit_third_.data() : wanted_.data();
   int* position = frontier_position_.data();
   FrontierKey* frontier = frontier_.data();
   distance[source] = 0.0;
@@ -88,8 +91,27 @@ int CycleSearch::shortest_paths(int tree, int source, int* parent, int num_third
   position[source] = 0;
   int settled = 0, thirds_left = num_thirds;
   int size = 1;
+  // A unit not in the frontier goes in slot `size` (only kept if it improved). Written as
+  // selects, but the compiler branches on `better`, which is right: about a quarter of the arcs
+  // improve on the dataset (half reach settled units), and a version forced branch-free with
+  // masks measured ~10 % slower. Sorted arcs also help (unsorted, with a per-arc limit test:
+  // ~25 % slower).
+  const auto relax = [&](double d, int k) {
+    const double candidate = d + arcs[k].weight;
+    const int w = arcs[k].unit;
+    const double old = distance[w];
+    const bool better = candidate < old;
+    distance[w] = better ? candidate : old;
+    parent[w] = better ? k : parent[w];
+    const int at = position[w];
+    const int slot = at < 0 ? size : at;
+    const FrontierKey key = frontier_key(better ? candidate : old, w);
+    frontier[slot] = better ? key : frontier[slot];
+    position[w] = better ? slot : at;
+    size += better & (at < 0);
+  };
   while (size > 0) {
-    // The frontier is small (about ten vertices on these graphs): an unordered array scanned
+    // The frontier is small (about a dozen units on these graphs): an unordered array scanned
     // for its least (distance, id) key beats a heap's unpredictable branches.
     int best = 0;
     FrontierKey least = frontier[0];
@@ -98,105 +120,185 @@ int CycleSearch::shortest_paths(int tree, int source, int* parent, int num_third
       least = less ? frontier[k] : least;
       best = less ? k : best;
     }
-    const int u = key_vertex(least);
+    const int u = key_unit(least);
     const FrontierKey moved = frontier[--size];
     frontier[best] = moved;
-    position[key_vertex(moved)] = best;
+    position[key_unit(moved)] = best;
     position[u] = -1;
     order[settled++] = u;
+    settled_by[u] = stamp;
     thirds_left -= is_third[u];
     if (thirds_left == 0) break;  // the rest is never used
     const double d = distance[u];
     // Arcs are sorted by weight (blocked ones aside, which weigh infinity in place): the arcs
     // past `limit` are the last ones. With no limit (infinity) none is.
-    int end = begin[u + 1];
+    int end = end_of[u];
     while (end > begin[u] && d + arcs[end - 1].weight > limit) --end;
-    // Without a branch: whether an arc improves its end is close to a coin toss. A vertex not
-    // in the frontier goes in slot `size` (only kept if it improved).
-    for (int k = begin[u]; k < end; ++k) {
-      const double candidate = d + arcs[k].weight;
-      const int w = arcs[k].vertex;
-      const double old = distance[w];
-      const bool better = candidate < old;
-      distance[w] = better ? candidate : old;
-      parent[w] = better ? u : parent[w];
-      const int at = position[w];
-      const int slot = at < 0 ? size : at;
-      const FrontierKey key = frontier_key(better ? candidate : old, w);
-      frontier[slot] = better ? key : frontier[slot];
-      position[w] = better ? slot : at;
-      size += better & (at < 0);
+    for (int k = begin[u]; k < end; ++k) relax(d, k);
+    for (int k = extra_head[u]; k >= 0; k = extra_next[k]) {
+      if (d + arcs[k].weight <= limit) relax(d, k);
     }
   }
-  for (int k = 0; k < size; ++k) position[key_vertex(frontier[k])] = -1;
+  for (int k = 0; k < size; ++k) position[key_unit(frontier[k])] = -1;
   return settled;
 }
 
-// An edge E = (u, w) of weight c can be left out of every search when, for every seed edge a
-// search blocks, some other path joins u and w at least `margin` shorter than c: then every
-// search reaches w (and u) by a strictly shorter way, so E never sets a final distance or parent
-// and leaving it out changes no result (the removed edges' own replacements only use strictly
-// lighter edges, so removing several is safe too). The margin is far above the rounding error
-// of any path sum. Checked here on two-edge detours u - x - w only: a detour that uses no seed
-// edge, or two whose seed edges differ (each search blocks one seed).
-void CycleSearch::find_dominated_edges(const SegmentGraph& graph, int stride) {
-  const int n = graph.num_vertices();
-  const int m = graph.num_edges();
-  dominated_.assign(m, 0);
-  is_seed_.assign(m, 0);
-  for (size_t i = 0; i < graph.detected_edges.size(); i += stride) {
-    is_seed_[graph.detected_edges[i]] = 1;
+void CycleSearch::open_seed(const SegmentGraph& graph, int seed, int s1, int s2) {
+  std::vector<int>& unit_of = units_.unit_of;
+  std::vector<int>& partner = units_.partner;
+  const int a = unit_of[s1];
+  // A segment unit splits (s2 takes the spare id); otherwise s1 and s2 are units of their own.
+  if (partner[s1] == s2) {
+    unit_of[s2] = num_units_;
+    partner[s1] = partner[s2] = -1;
   }
-  double total = 0.0;
-  for (const GraphEdge& e : graph.edges) total += e.weight;
-  const double margin = 1e-9 * (1.0 + total);
-  tolerance_ = margin;
-  // Per neighbour x of u: the lightest edge u - x (for the current u), by stamp.
-  via_stamp_.assign(n, -1);
-  via_weight_.resize(n);
-  via_edge_.resize(n);
-  const auto& adjacency = graph.adjacency;
-  const auto& begin = graph.adjacency_begin;
-  for (int u = 0; u < n; ++u) {
-    for (int k = begin[u]; k < begin[u + 1]; ++k) {
-      const int x = adjacency[k].vertex;
-      const int e = adjacency[k].edge;
-      const double weight = graph.edges[e].weight;
-      if (via_stamp_[x] != u || weight < via_weight_[x] ||
-          (weight == via_weight_[x] && is_seed_[via_edge_[x]] && !is_seed_[e])) {
-        via_stamp_[x] = u;
-        via_weight_[x] = weight;
-        via_edge_[x] = e;
-      }
+  const int b = unit_of[s2];
+  blocked_.clear();
+  for (const int part : {a, b}) {
+    if (part == num_units_) continue;
+    for (int k = units_.arc_begin[part]; k < units_.arc_begin[part + 1]; ++k) {
+      const int r = units_.reverse[k];
+      blocked_.push_back({r, arcs_[r].weight});
+      arcs_[r].weight = std::numeric_limits<double>::infinity();
     }
-    for (int k = begin[u]; k < begin[u + 1]; ++k) {
-      const int w = adjacency[k].vertex;
-      const int edge = adjacency[k].edge;
-      const double c = graph.edges[edge].weight;
-      if (w < u || !(c > margin)) continue;  // each edge once, from its lower end
-      // Seed edges of the detours found so far: -1 = a detour without any was found.
-      int first_a = -2, first_b = -2;
-      bool dominated = false;
-      for (int j = begin[w]; j < begin[w + 1] && !dominated; ++j) {
-        const int x = adjacency[j].vertex;
-        const int b = adjacency[j].edge;
-        if (x == u || via_stamp_[x] != u || b == edge) continue;
-        const int a = via_edge_[x];
-        if (a == edge || !(via_weight_[x] + graph.edges[b].weight < c - margin)) continue;
-        const int seed_a = is_seed_[a] ? a : -1;
-        const int seed_b = is_seed_[b] ? b : -1;
-        if (seed_a < 0 && seed_b < 0) {
-          dominated = true;
-        } else if (first_a == -2) {
-          first_a = seed_a;
-          first_b = seed_b;
-        } else {
-          // Two detours that no single blocked seed edge both cuts.
-          const auto shares = [&](int s) { return s >= 0 && (s == first_a || s == first_b); };
-          dominated = !shares(seed_a) && !shares(seed_b);
-        }
-      }
-      dominated_[edge] = dominated;
+  }
+  arcs_.resize(units_.arcs.size());
+  for (const int s : {s1, s2}) {
+    const int part = unit_of[s];
+    const int first = static_cast<int>(arcs_.size());
+    for (int k = graph.adjacency_begin[s]; k < graph.adjacency_begin[s + 1]; ++k) {
+      const SegmentGraph::Incidence& in = graph.adjacency[k];
+      if (in.edge == seed) continue;
+      // By weight (a handful of arcs), as every unit's.
+      const Arc arc{unit_of[in.vertex], s, in.vertex, graph.edges[in.edge].weight};
+      arcs_.push_back(arc);
+      int at = static_cast<int>(arcs_.size()) - 1;
+      for (; at > first && arcs_[at - 1].weight > arc.weight; --at) arcs_[at] = arcs_[at - 1];
+      arcs_[at] = arc;
+    }
+    unit_begin_[part] = first;
+    unit_end_[part] = static_cast<int>(arcs_.size());
+  }
+  // The same edges the other way, from the neighbouring units.
+  const int own_end = static_cast<int>(arcs_.size());
+  extra_next_.resize(arcs_.size() + (own_end - units_.arcs.size()));
+  for (int k = static_cast<int>(units_.arcs.size()); k < own_end; ++k) {
+    const Arc arc = arcs_[k];
+    if (arc.unit == a || arc.unit == b) continue;
+    extra_next_[arcs_.size()] = extra_head_[arc.unit];
+    extra_head_[arc.unit] = static_cast<int>(arcs_.size());
+    arcs_.push_back({unit_of[arc.from], arc.to, arc.from, arc.weight});
+  }
+}
+
+void CycleSearch::close_seed(int s1, int s2) {
+  std::vector<int>& unit_of = units_.unit_of;
+  const int own_begin = static_cast<int>(units_.arcs.size());
+  for (int k = own_begin; k < unit_end_[unit_of[s2]]; ++k) extra_head_[arcs_[k].unit] = -1;
+  for (const auto& [k, weight] : blocked_) arcs_[k].weight = weight;
+  for (const int s : {s1, s2}) {
+    const int part = unit_of[s];
+    if (part < num_units_) {
+      unit_begin_[part] = units_.arc_begin[part];
+      unit_end_[part] = units_.arc_begin[part + 1];
+    }
+  }
+  if (unit_of[s2] == num_units_) {
+    unit_of[s2] = unit_of[s1];
+    units_.partner[s1] = s2;
+    units_.partner[s2] = s1;
+  }
+}
+
+// The graph-vertex trees: each unit's entry vertex (where its parent arc arrives) hangs from the
+// vertex the arc leaves, the other end of a segment unit from the entry (by the zero-weight
+// segment). Parents settle before children, so one pass in settle order fills each tree.
+inline int CycleSearch::entry_vertex(int tree, int k, int root, int* parent) const {
+  if (k == 0) {
+    parent[root] = -1;
+    return root;
+  }
+  const Arc& arc = arcs_[parent_arc_[tree][order_[tree][k]]];
+  parent[arc.to] = arc.from;
+  return arc.to;
+}
+
+// Second tree: parents, shoelace sums and the pre-order interval [enter, enter + size) of each
+// vertex, from subtree sizes (a unit's vertices after its parent's, its other end after its
+// entry). Vertices outside the tree get size 0.
+void CycleSearch::second_tree_pass(const Point* points, int s2, int settled, int* parent) {
+  const int* order = order_[1].data();
+  const int* parent_arc = parent_arc_[1].data();
+  const int* partner = units_.partner.data();
+  int* size = size_.data();
+  int* enter = enter_.data();
+  int* next = next_.data();
+  double* sum = shoelace_[1].data();
+  std::fill(size_.begin(), size_.end(), 0);
+  for (int k = settled - 1; k >= 0; --k) {
+    const Arc* arc = k > 0 ? &arcs_[parent_arc[order[k]]] : nullptr;
+    const int e = k > 0 ? arc->to : s2;
+    const int o = partner[e];
+    if (o >= 0) size[e] += ++size[o];
+    ++size[e];
+    if (k > 0) size[arc->from] += size[e];
+  }
+  for (int k = 0; k < settled; ++k) {
+    const int e = entry_vertex(1, k, s2, parent);
+    const int p = parent[e];
+    if (p < 0) {
+      sum[e] = 0.0;
+      enter[e] = 0;
+    } else {
+      sum[e] = sum[p] + cross(points[p], points[e]);
+      enter[e] = next[p];
+      next[p] += size[e];
+    }
+    next[e] = enter[e] + 1;
+    const int o = partner[e];
+    if (o >= 0) {
+      parent[o] = e;
+      sum[o] = sum[e] + cross(points[e], points[o]);
+      enter[o] = next[e];
+      next[e] += size[o];
+      next[o] = enter[o] + 1;
+    }
+  }
+}
+
+// First tree (after the second): parents, shoelace sums, bound[v] (the largest d1 - d2 on the
+// path s1 ... v) and fork[v] (see the walk in run).
+void CycleSearch::first_tree_pass(const Point* points, int s1, int settled, int slot, int* parent,
+                                  const int* parent2) {
+  const int* partner = units_.partner.data();
+  const double* d1 = distance_[0].data();
+  const double* d2 = distance_[1].data();
+  const int* order = order_[0].data();
+  const int* settled_by2 = settled_[1].data();
+  double* sum = shoelace_[0].data();
+  double* bound = bound_.data();
+  int* fork = fork_.data();
+  for (int k = 0; k < settled; ++k) {
+    const int u = order[k];
+    const int e = entry_vertex(0, k, s1, parent);
+    const int p = parent[e];
+    const bool in_second = settled_by2[u] == slot;
+    const double difference = d1[u] - d2[u];
+    if (p < 0) {
+      sum[e] = 0.0;
+      bound[e] = difference;
+      fork[e] = e;
+    } else {
+      sum[e] = sum[p] + cross(points[p], points[e]);
+      bound[e] = std::max(bound[p], difference);
+      fork[e] = in_second && parent2[e] == p ? fork[p] : e;
+    }
+    const int o = partner[e];
+    if (o >= 0) {
+      parent[o] = e;
+      sum[o] = sum[e] + cross(points[e], points[o]);
+      bound[o] = bound[e];
+      fork[o] = in_second && parent2[o] == e ? fork[e] : o;
     }
   }
 }
@@ -218,49 +320,60 @@ void CycleSearch::run(const SegmentGraph& graph, const BdspOptions& options,
   found_.clear();
   seed_source_.clear();
 
-  // The graph once, in the layout the searches read: CSR arcs with their weights inline,
-  // without the edges no search can use (find_dominated_edges).
-  find_dominated_edges(graph, stride);
-  arc_begin_.assign(n + 1, 0);
-  arcs_.clear();
-  for (int u = 0; u < n; ++u) {
-    for (int k = graph.adjacency_begin[u]; k < graph.adjacency_begin[u + 1]; ++k) {
-      const SegmentGraph::Incidence& in = graph.adjacency[k];
-      if (!dominated_[in.edge]) arcs_.push_back({in.vertex, in.edge, graph.edges[in.edge].weight});
+  // The graph once, in the layout the searches read: contracted, without the arcs no search
+  // needs. The margin of a useless arc is far above the rounding error of any path sum.
+  double total = 0.0;
+  for (const GraphEdge& e : graph.edges) total += e.weight;
+  tolerance_ = 1e-9 * (1.0 + total);
+  build_segment_units(graph, &units_);
+  num_units_ = units_.num_units;
+  // Each seed opens the units of its two ends (open_seed).
+  opened_by_.assign(num_units_, -1);
+  for (int i = 0; i < num_detected; i += stride) {
+    const int seed = graph.detected_edges[i];
+    for (const int end : {graph.edges[seed].u, graph.edges[seed].v}) {
+      int& opener = opened_by_[units_.unit_of[end]];
+      opener = opener == -1 || opener == seed ? seed : -2;
     }
-    arc_begin_[u + 1] = static_cast<int>(arcs_.size());
-    // By weight, so that a bounded search stops relaxing at the first arc past its bound (the
-    // order of one vertex's arcs changes neither distances nor parents: each reaches another
-    // end, or the same end from the same parent).
-    std::sort(arcs_.begin() + arc_begin_[u], arcs_.end(),
-              [](const Arc& l, const Arc& r) { return l.weight < r.weight; });
   }
-  is_third_.assign(n, 0);
-  wanted_.assign(n, 0);
-  num_thirds_ = 0;
+  drop_dominated_arcs(opened_by_, tolerance_, &units_);
+  const int num_ids = num_units_ + 1;  // and the spare id of s2's unit during a seed
+  arcs_ = units_.arcs;
+  unit_begin_.assign(units_.arc_begin.begin(), units_.arc_begin.end() - 1);
+  unit_begin_.push_back(0);
+  unit_end_.assign(units_.arc_begin.begin() + 1, units_.arc_begin.end());
+  unit_end_.push_back(0);
+  extra_head_.assign(num_ids, -1);
+  unit_third_.assign(num_ids, 0);
+  wanted_.assign(num_ids, 0);
+  num_third_units_ = 0;
   for (int e : graph.detected_edges) {
-    const int third = graph.edges[e].u;
-    if (!is_third_[third]) {
-      is_third_[third] = 1;
-      ++num_thirds_;
+    const int unit = units_.unit_of[graph.edges[e].u];
+    if (!unit_third_[unit]) {
+      unit_third_[unit] = 1;
+      ++num_third_units_;
     }
   }
   for (int tree = 0; tree < 2; ++tree) {
-    distance_[tree].resize(n);
+    distance_[tree].resize(num_ids);
+    parent_arc_[tree].resize(num_ids);
+    order_[tree].resize(num_ids);
+    settled_[tree].assign(num_ids, -1);
     shoelace_[tree].resize(n);
-    order_[tree].resize(n);
   }
   bound_.resize(n);
+  points_.resize(n);
   fork_.resize(n);
   enter_.resize(n);
   next_.resize(n);
   size_.resize(n);
-  frontier_position_.assign(n, -1);
-  frontier_.resize(n + 1);
+  frontier_position_.assign(num_ids, -1);
+  frontier_.resize(num_ids + 1);
   meeting_seen_.assign(n, -1);
   const int num_seeds = num_detected > 0 ? (num_detected + stride - 1) / stride : 0;
   parents_.resize(static_cast<size_t>(2) * num_seeds * n);
 
+  const std::vector<int>& unit_of = units_.unit_of;
   for (int i = 0, slot = 0; i < num_detected; i += stride, ++slot) {
     const int seed = graph.detected_edges[i];
     const int s1 = graph.edges[seed].u;
@@ -269,89 +382,34 @@ void CycleSearch::run(const SegmentGraph& graph, const BdspOptions& options,
     seed_source_.push_back(s2);
     int* parent1 = parents_.data() + static_cast<size_t>(2 * slot) * n;
     int* parent2 = parent1 + n;
-    // Block the seed edge: its arcs weigh infinity for the two searches.
-    blocked_.clear();
-    for (const int end : {s1, s2}) {
-      for (int k = arc_begin_[end]; k < arc_begin_[end + 1]; ++k) {
-        if (arcs_[k].edge == seed) {
-          blocked_.push_back({k, arcs_[k].weight});
-          arcs_[k].weight = std::numeric_limits<double>::infinity();
-        }
-      }
-    }
+    open_seed(graph, seed, s1, s2);
     // The seed's gap bound (CandidateGate in bdsp.h); the slack covers rounding.
     double limit = kInfinity;
     if (gate != nullptr && best_cost < kInfinity) {
       limit = best_cost > 0.0 ? (1.0 + gate->tolerance) * best_cost * max_area * (1.0 + 1e-9) : 0.0;
     }
     seed_limits_.push_back(limit);
-    const int settled1 = shortest_paths(0, s1, parent1, num_thirds_, limit);
+    const int settled1 = shortest_paths(0, unit_of[s1], num_third_units_, limit, slot);
     // Only the third vertices the first tree settled can close a cycle: the second search
     // waits for those alone.
     int wanted = 0;
     for (int k = 0; k < settled1; ++k) {
-      const int v = order_[0][k];
-      wanted_[v] = is_third_[v];
-      wanted += is_third_[v];
+      const int u = order_[0][k];
+      wanted_[u] = unit_third_[u];
+      wanted += unit_third_[u];
     }
-    const int settled2 = shortest_paths(1, s2, parent2, wanted, limit);
+    const int settled2 = shortest_paths(1, unit_of[s2], wanted, limit, slot);
     for (int k = 0; k < settled1; ++k) wanted_[order_[0][k]] = 0;
-    for (const auto& [k, weight] : blocked_) arcs_[k].weight = weight;
-
-    // Root-to-vertex sums of the shoelace terms, coordinates relative to s1 (smaller terms).
+    // Coordinates relative to s1 (smaller shoelace terms).
     const Point origin = graph.vertices[s1];
-    for (int tree = 0; tree < 2; ++tree) {
-      const int* parent = tree == 0 ? parent1 : parent2;
-      const int* order = order_[tree].data();
-      double* sum = shoelace_[tree].data();
-      const int settled = tree == 0 ? settled1 : settled2;
-      sum[order[0]] = 0.0;
-      for (int k = 1; k < settled; ++k) {
-        const int v = order[k];
-        const Point p = graph.vertices[parent[v]] - origin;
-        const Point q = graph.vertices[v] - origin;
-        sum[v] = sum[parent[v]] + (p.x * q.y - q.x * p.y);
-      }
-    }
-    // bound[v]: the largest d1 - d2 on the first tree's path s1 ... v (see the walk below).
-    {
-      const double* d1 = distance_[0].data();
-      const double* d2 = distance_[1].data();
-      const int* order = order_[0].data();
-      double* bound = bound_.data();
-      int* fork = fork_.data();
-      bound[s1] = d1[s1] - d2[s1];
-      fork[s1] = s1;
-      for (int k = 1; k < settled1; ++k) {
-        const int v = order[k];
-        const int p = parent1[v];
-        bound[v] = std::max(bound[p], d1[v] - d2[v]);
-        fork[v] = parent2[v] == p ? fork[p] : v;
-      }
-    }
-    // Pre-order interval [enter, enter + size) of each settled vertex of the second tree, from
-    // subtree sizes (parents settle before their children).
-    {
-      const int* order = order_[1].data();
-      std::fill(size_.begin(), size_.end(), 0);
-      for (int k = settled2 - 1; k >= 0; --k) {
-        const int v = order[k];
-        ++size_[v];
-        if (k > 0) size_[parent2[v]] += size_[v];
-      }
-      enter_[s2] = 0;
-      next_[s2] = 1;
-      for (int k = 1; k < settled2; ++k) {
-        const int v = order[k];
-        const int p = parent2[v];
-        enter_[v] = next_[p];
-        next_[p] += size_[v];
-        next_[v] = enter_[v] + 1;
-      }
-    }
+    for (int v = 0; v < n; ++v) points_[v] = graph.vertices[v] - origin;
+    second_tree_pass(points_.data(), s2, settled2, parent2);
+    first_tree_pass(points_.data(), s1, settled1, slot, parent1, parent2);
 
     const double* d1 = distance_[0].data();
     const double* d2 = distance_[1].data();
+    const int* settled_by1 = settled_[0].data();
+    const int* settled_by2 = settled_[1].data();
     const double* sum1 = shoelace_[0].data();
     const double* sum2 = shoelace_[1].data();
     const int* enter = enter_.data();
@@ -361,7 +419,8 @@ void CycleSearch::run(const SegmentGraph& graph, const BdspOptions& options,
     for (int j = 0; j < num_detected; ++j) {
       if (j == i) continue;
       const int third = graph.edges[graph.detected_edges[j]].u;
-      if (parent1[third] == kUnreached || parent2[third] == kUnreached) continue;
+      const int third_unit = unit_of[third];
+      if (settled_by1[third_unit] != slot || settled_by2[third_unit] != slot) continue;
 
       // The paths s1 -> third and third -> s2 meet at the vertex of the first path nearest s1
       // that also lies on the second, i.e. is an ancestor-or-self of `third` in the second tree.
@@ -369,9 +428,10 @@ void CycleSearch::run(const SegmentGraph& graph, const BdspOptions& options,
       // shortest path v ... third; up to rounding, far below `tolerance_`), while elsewhere on
       // the first path the difference is smaller; so the walk up the first path stops where
       // nothing above can be on the second (bound = the largest difference from s1 down).
-      const double limit = d1[third] - d2[third] - tolerance_;
+      const double limit = d1[third_unit] - d2[third_unit] - tolerance_;
       // From `third` up to fork[third] both trees follow the same parents, so all of it is on
       // both paths; only above the fork can the paths share a vertex again (where they tie).
+      // A vertex outside the second tree has size 0: never an ancestor.
       const unsigned third_enter = static_cast<unsigned>(enter[third]);
       int meeting = fork[third];
       for (int v = parent1[meeting]; v != -1 && bound[v] >= limit; v = parent1[v]) {
@@ -387,7 +447,8 @@ void CycleSearch::run(const SegmentGraph& graph, const BdspOptions& options,
       CandidateSummary c;
       c.seed_edge = seed;
       // The blocked seed edge weighs 0, so the gap is what the two paths add up to.
-      c.gap_length = d1[meeting] + d2[meeting];
+      const int meeting_unit = unit_of[meeting];
+      c.gap_length = d1[meeting_unit] + d2[meeting_unit];
       c.area = 0.5 * std::abs(sum1[meeting] - sum2[meeting]);
       if (gate != nullptr) {
         // What StableChooser::choose computes: a candidate not admissible, or costlier than
@@ -400,6 +461,7 @@ void CycleSearch::run(const SegmentGraph& graph, const BdspOptions& options,
       candidates_.push_back(c);
       found_.push_back({slot, meeting});
     }
+    close_seed(s1, s2);
   }
 }
 

@@ -6,6 +6,7 @@
 
 #include "scbt/geometry/polygon.h"
 #include "scbt/grouping/segment_graph.h"
+#include "scbt/grouping/segment_units.h"
 
 namespace scbt {
 
@@ -57,14 +58,23 @@ struct CandidateSummary {
 // is a summary (gap, area, seed) plus the meeting vertex of its two shortest paths, and the
 // search keeps each seed's two shortest-path trees (parent arrays) so that the vertices of any
 // candidate can be listed afterwards. What makes it fast, each tested against the
-// straightforward search candidate for candidate:
+// straightforward search:
+//  - Dijkstra runs over contracted segments (segment_units.h): both ends of a detected segment
+//    are one node, parallel edges between two nodes are one arc (the lightest), so each search
+//    settles about half as many nodes. The seed's segment is split back into s1 and s2 for its
+//    two searches, its arcs taken from the vertices. Each node's entry vertex hangs from the
+//    vertex its parent arc leaves, the segment's other end from the entry: the trees over graph
+//    vertices, shortest-path trees like the vertex search's. Where path lengths tie they can
+//    pick other shortest paths than a vertex search (then other, equally valid, candidates);
+//    without ties they are the same trees and the candidates are the same, in the same order;
 //  - the area comes from root-to-vertex sums of shoelace terms along each tree, not a walk;
 //  - the meeting vertex is where the two trees' parents first differ up from the third vertex
 //    (precomputed per seed), plus a walk above it cut short by a bound on d1 - d2 (the paths can
 //    meet again only where rounded path lengths tie differently from the two roots);
-//  - Dijkstra keeps its frontier (about ten vertices) as an unordered array of 128-bit
-//    (distance, id) keys scanned for the least, stops once every third vertex is settled, and
-//    skips edges that a strictly shorter two-edge detour makes useless to every search;
+//  - Dijkstra keeps its frontier (about a dozen nodes) as an unordered array of 128-bit
+//    (distance, id) keys scanned for the least and stops once every third vertex is settled;
+//  - arcs that a strictly shorter two-arc detour makes useless to every search are left out
+//    (drop_dominated_arcs);
 //  - nothing is allocated once the buffers have grown to the graph's size.
 // options.generic_graph is ignored here. Not thread-safe; use one object per thread.
 //
@@ -74,9 +84,10 @@ struct CandidateSummary {
 //    kept from seeds 0..i-1 (infinity before any), and the seed's gap bound is
 //    G_i = (1 + tolerance) Γ_i max_area() (1 + 1e-9) (seed_limits()[i]; infinity while Γ_i is).
 //    A near tie has gap = Γ area <= (1 + tolerance) Γ* max_area() <= G_i.
-//  - Both Dijkstras of seed i settle only vertices within G_i of their root: an arc u -> w is
-//    not relaxed when d(u) + weight > G_i (arcs are sorted by weight, so the loop ends there).
-//    Distances and parents of the vertices within G_i are the unbounded search's, bit for bit.
+//  - Both Dijkstras of seed i settle only nodes within G_i of their root: an arc u -> w is not
+//    relaxed when d(u) + weight > G_i (arcs are sorted by weight, so the loop ends there).
+//    Distances and parents of the vertices within G_i are the unbounded search's, bit for bit
+//    (ties included: the frontier order is (distance, id), whatever was left out).
 //  - So seed i yields the unbounded candidates whose third vertex lies within G_i of both s1
 //    and s2 (the repeat-of-a-cycle skip then only sees those thirds), filtered: a candidate is
 //    kept iff it is admissible and Γ <= Γ_best (1 + tolerance), Γ_best the least admissible Γ
@@ -96,7 +107,8 @@ class CycleSearch {
            const CandidateGate* gate = nullptr);
 
   // The candidates of search_cycle_candidates, in the same order, with bit-identical gaps and
-  // areas equal to ~1e-9 relative (summed in another order).
+  // areas equal to ~1e-9 relative (summed in another order). Where path lengths tie, other
+  // shortest paths than a vertex-by-vertex Dijkstra's (see above).
   const std::vector<CandidateSummary>& candidates() const { return candidates_; }
   int size() const { return static_cast<int>(candidates_.size()); }
   // Candidate k's cycle (graph vertex ids; the cycle closes back to front), into *out.
@@ -110,38 +122,51 @@ class CycleSearch {
   const std::vector<double>& seed_limits() const { return seed_limits_; }
 
  private:
-  struct Arc {
-    int vertex;
-    int edge;
-    double weight;
-  };
+  using Arc = SegmentUnits::Arc;
   struct Found {
     int seed_slot;  // index of the seed's trees in parents_
     int meeting;    // where the path from s1 meets the path back to s2
   };
-  // Dijkstra from `source` (the seed's arcs weighing infinity) into distance_[tree], the parent
-  // array `parent` and order_[tree] (settled vertices in order); stops when all third vertices
-  // are settled (is_third_ for tree 0, wanted_ for tree 1) or nothing within `limit` is left:
-  // arcs u -> w with d(u) + weight > limit are not relaxed. Returns the number of settled
-  // vertices.
-  int shortest_paths(int tree, int source, int* parent, int num_thirds, double limit);
-  void find_dominated_edges(const SegmentGraph& graph, int stride);
+  // Dijkstra over units from unit `source` into distance_[tree], parent_arc_[tree] and
+  // order_[tree] (settled units in order; settled_[tree] marks them with `stamp`); stops when
+  // all units holding third vertices are settled (unit_third_ for tree 0, wanted_ for tree 1) or
+  // nothing within `limit` is left: arcs u -> w with d(u) + weight > limit are not relaxed.
+  // Returns the number of settled units.
+  int shortest_paths(int tree, int source, int num_thirds, double limit, int stamp);
+  // Splits the seed's unit into s1's and s2's (s2's takes the spare id num_units), blocks every
+  // arc into them and gives both the arcs of their own vertex, the seed edge left out; the
+  // arcs into them go on extra lists of their neighbours. close_seed undoes it.
+  void open_seed(const SegmentGraph& graph, int seed, int s1, int s2);
+  void close_seed(int s1, int s2);
+  // The vertex by which the k-th unit settled in `tree` is entered (`root` for the first), its
+  // parent set in `parent`.
+  int entry_vertex(int tree, int k, int root, int* parent) const;
+  void second_tree_pass(const Point* points, int s2, int settled, int* parent);
+  void first_tree_pass(const Point* points, int s1, int settled, int slot, int* parent,
+                       const int* parent2);
 
   int num_vertices_ = 0;
+  int num_units_ = 0;          // units of the contraction; one more id is s2's during a seed
   std::vector<Point> points_;  // vertex positions relative to the current seed's s1
-  std::vector<int> arc_begin_;
+  SegmentUnits units_;
+  // units_.arcs, then the open seed's arcs: from its two units, then into them.
   std::vector<Arc> arcs_;
-  std::vector<char> is_third_;
-  std::vector<char> wanted_;  // third vertices settled by the first tree (the second waits for)
+  std::vector<int> unit_begin_, unit_end_;  // each unit's arcs in arcs_
+  // Arcs into the open seed's units, per unit: a chain from extra_head_ through extra_next_.
+  std::vector<int> extra_head_, extra_next_;
+  std::vector<int> opened_by_;  // per unit: the seed that opens it, -1 none, -2 several
+  std::vector<char> unit_third_;
+  std::vector<char> wanted_;  // units of third vertices settled by the first tree
+  int num_third_units_ = 0;
   std::vector<double> seed_limits_;
-  std::vector<char> is_seed_, dominated_;  // per edge
-  std::vector<int> via_stamp_, via_edge_;
-  std::vector<double> via_weight_;
-  int num_thirds_ = 0;
+  // Per tree, per unit.
   std::vector<double> distance_[2];
-  std::vector<double> shoelace_[2];  // root-to-vertex sums of cross(parent, child)
+  std::vector<int> parent_arc_[2];
   std::vector<int> order_[2];
-  std::vector<int> enter_, size_, next_;  // pre-order interval of the second tree
+  std::vector<int> settled_[2];  // the seed slot that last settled the unit
+  // Per tree, per graph vertex: root-to-vertex sums of cross(parent, child).
+  std::vector<double> shoelace_[2];
+  std::vector<int> enter_, size_, next_;  // pre-order interval of the second (vertex) tree
   std::vector<double> bound_;             // largest d1 - d2 from s1 down the first tree
   // fork_[v]: the nearest vertex up the first tree from v (v itself included) whose two parents
   // differ: up to it, the paths from v to s1 and to s2 are the same.
@@ -149,13 +174,13 @@ class CycleSearch {
   // Far above the rounding error of any path length (a fraction 1e-9 of all weights).
   double tolerance_ = 0.0;
   std::vector<int> meeting_seen_;
-  // Dijkstra's frontier: (distance, vertex id) keys, unordered; frontier_position_[v] is v's
+  // Dijkstra's frontier: (distance, unit id) keys, unordered; frontier_position_[u] is u's
   // slot or -1. One spare slot past the end.
   std::vector<unsigned __int128> frontier_;
   std::vector<int> frontier_position_;
-  std::vector<std::pair<int, double>> blocked_;  // arcs of the seed edge and their weights
-  // Parent vertex per tree per seed: parents_[(2 * slot + tree) * n + v]; -1 for the root,
-  // -2 where not settled.
+  std::vector<std::pair<int, double>> blocked_;  // arcs into the open seed's units, weights
+  // Parent vertex per tree per seed: parents_[(2 * slot + tree) * n + v], -1 for the root;
+  // only the vertices of settled units are written.
   std::vector<int> parents_;
   std::vector<int> seed_source_;  // s1, s2 per slot
   std::vector<CandidateSummary> candidates_;
