@@ -28,11 +28,9 @@ class BoundaryQuery {
   }
 
  private:
-  struct Box {
-    double min_x, max_x, min_y, max_y;
-  };
   const Polygon* boundary_ = nullptr;
-  std::vector<Box> boxes_;
+  // Bounding box of edge i, one array per side (so that the box test vectorises).
+  std::vector<double> min_x_, max_x_, min_y_, max_y_;
 };
 
 }  // namespace scbt

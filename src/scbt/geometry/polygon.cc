@@ -28,15 +28,6 @@ double perimeter(const Polygon& polygon) {
   return total;
 }
 
-double distance_sq_to_segment(const Point& p, const Point& a, const Point& b) {
-  const Point ab = b - a;
-  const double length_sq = ab.dot(ab);
-  double t = length_sq > 0.0 ? (p - a).dot(ab) / length_sq : 0.0;
-  t = std::clamp(t, 0.0, 1.0);
-  const Point d = p - (a + t * ab);
-  return d.x * d.x + d.y * d.y;
-}
-
 double distance_to_segment(const Point& p, const Point& a, const Point& b) {
   return std::sqrt(distance_sq_to_segment(p, a, b));
 }

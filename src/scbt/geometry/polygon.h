@@ -1,6 +1,7 @@
 // Closed polygons and line segments in image coordinates, and the few measures the tracker needs.
 #pragma once
 
+#include <algorithm>
 #include <opencv2/core/types.hpp>
 #include <vector>
 
@@ -33,8 +34,17 @@ double perimeter(const Polygon& polygon);
 double distance_to_boundary(const Point& p, const Polygon& polygon);
 
 double distance_to_segment(const Point& p, const Point& a, const Point& b);
-// Its square (no square root), for comparisons and minima.
-double distance_sq_to_segment(const Point& p, const Point& a, const Point& b);
+// Its square (no square root), for comparisons and minima. Inline: the distance queries call it
+// in their innermost loops (a call per boundary edge or per sample), where inlining it let the
+// loops be optimised as a whole.
+inline double distance_sq_to_segment(const Point& p, const Point& a, const Point& b) {
+  const Point ab = b - a;
+  const double length_sq = ab.dot(ab);
+  double t = length_sq > 0.0 ? (p - a).dot(ab) / length_sq : 0.0;
+  t = std::clamp(t, 0.0, 1.0);
+  const Point d = p - (a + t * ab);
+  return d.x * d.x + d.y * d.y;
+}
 
 // True when segments [p1,p2] and [q1,q2] cross at a point interior to both
 // (touching at endpoints or collinear overlap does not count).

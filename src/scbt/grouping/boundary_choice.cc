@@ -6,15 +6,6 @@
 
 namespace scbt {
 
-double grouping_cost(double gap_length, double area) {
-  return area > 0.0 ? gap_length / area : std::numeric_limits<double>::infinity();
-}
-
-double area_similarity(double previous_area, double candidate_area) {
-  if (!(previous_area > 0.0) || !(candidate_area > 0.0)) return 0.0;
-  return std::min(previous_area / candidate_area, candidate_area / previous_area);
-}
-
 std::optional<BoundaryChoice> choose_boundary(const std::vector<CycleCandidate>& candidates,
                                               double previous_area, double min_similarity) {
   BoundaryChoice best;

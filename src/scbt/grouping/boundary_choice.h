@@ -12,11 +12,20 @@
 
 namespace scbt {
 
-// Γ = |B_G| / area (Eq. 1). Infinite for a cycle without area.
-double grouping_cost(double gap_length, double area);
+// Γ = |B_G| / area (Eq. 1). Infinite for a cycle without area. Inline (as area_similarity):
+// the choice evaluates both for every candidate, hundreds per frame.
+inline double grouping_cost(double gap_length, double area) {
+  return area > 0.0 ? gap_length / area : std::numeric_limits<double>::infinity();
+}
 
 // S = min(A_p / A_c, A_c / A_p) (Eq. 2); 0 when either area is 0.
-double area_similarity(double previous_area, double candidate_area);
+inline double area_similarity(double previous_area, double candidate_area) {
+  if (!(previous_area > 0.0) || !(candidate_area > 0.0)) return 0.0;
+  // One division: the smaller area over the larger is the minimum of the two ratios, to the
+  // last bit (rounding is monotonic, so one ratio rounds to <= 1 and the other to >= 1).
+  return candidate_area >= previous_area ? previous_area / candidate_area
+                                         : candidate_area / previous_area;
+}
 
 struct BoundaryChoice {
   int index = -1;     // into the candidate list
@@ -68,6 +77,7 @@ class StableChooser {
   // index, -1 if no distance is finite.
   int closest_near_tie();
 
+  std::vector<double> admissible_cost_;
   std::vector<int> order_;
   std::vector<NearTie> near_ties_;
   std::vector<int> cycles_;
@@ -83,11 +93,17 @@ std::optional<BoundaryChoice> StableChooser::choose(const std::vector<Candidate>
                                                     double tolerance) {
   const double previous_area = area(previous);
   BoundaryChoice best;
+  // Each candidate's cost, kept for the near-tie pass below (NaN: not admissible, so that no
+  // comparison admits it), so that the divisions are done once per candidate (hundreds of
+  // candidates per frame).
+  admissible_cost_.resize(candidates.size());
   for (int i = 0; i < static_cast<int>(candidates.size()); ++i) {
+    admissible_cost_[i] = std::numeric_limits<double>::quiet_NaN();
     const double similarity = area_similarity(previous_area, candidates[i].area);
     if (!(similarity > min_similarity)) continue;
     ++best.num_admissible;
     const double cost = grouping_cost(candidates[i].gap_length, candidates[i].area);
+    admissible_cost_[i] = cost;
     if (best.index < 0 || cost < best.cost || (cost == best.cost && similarity > best.similarity)) {
       best.index = i;
       best.cost = cost;
@@ -100,9 +116,7 @@ std::optional<BoundaryChoice> StableChooser::choose(const std::vector<Candidate>
 
   order_.clear();
   for (int i = 0; i < static_cast<int>(candidates.size()); ++i) {
-    const Candidate& c = candidates[i];
-    if (!(area_similarity(previous_area, c.area) > min_similarity)) continue;
-    if (grouping_cost(c.gap_length, c.area) <= bound) order_.push_back(i);
+    if (admissible_cost_[i] <= bound) order_.push_back(i);
   }
   // Different seeds often close the same cycle; identical cycles have bit-identical gap and
   // area, so each (area, gap) pair is measured once.

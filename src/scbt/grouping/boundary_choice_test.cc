@@ -3,6 +3,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <random>
@@ -13,6 +14,26 @@ namespace scbt {
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
+
+// Eq. 2 is the smaller of the two area ratios; computed with one division it must equal that
+// minimum to the last bit, as the similarity gate compares it with a threshold. Areas within a
+// few ulps of each other are where the two ratios both round to 1.
+TEST(BoundaryChoice, AreaSimilarityIsTheSmallerRatioToTheLastBit) {
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> area_dist(1e-3, 1e6);
+  std::uniform_int_distribution<int> ulps(-4, 4), coin(0, 1);
+  for (int i = 0; i < 20000; ++i) {
+    const double a = area_dist(rng);
+    double b = area_dist(rng);
+    if (coin(rng) == 0) {  // nearly equal areas
+      b = a;
+      for (int k = ulps(rng); k != 0; k += k > 0 ? -1 : 1) {
+        b = std::nextafter(b, k > 0 ? 2.0 * a : 0.0);
+      }
+    }
+    EXPECT_EQ(area_similarity(a, b), std::min(a / b, b / a)) << a << " " << b;
+  }
+}
 
 TEST(BoundaryChoice, GroupingCostAndAreaSimilarity) {
   EXPECT_DOUBLE_EQ(grouping_cost(10.0, 200.0), 0.05);

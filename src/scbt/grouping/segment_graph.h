@@ -39,7 +39,8 @@ struct SegmentGraph {
 
 // Builds the graph from detected segments: endpoints that coincide exactly become one vertex,
 // zero-length and repeated segments are dropped, the endpoints are Delaunay-triangulated and every
-// triangulation edge that is not a detected segment becomes a generated edge.
+// triangulation edge that is not a detected segment becomes a generated edge. Edges: the detected
+// ones in input order, then the generated ones ordered by (lower, higher) vertex id, u < v.
 SegmentGraph build_segment_graph(const std::vector<Segment>& detected);
 // The same into `graph`, reusing its buffers (a tracker calls it every frame).
 void build_segment_graph(const std::vector<Segment>& detected, SegmentGraph* graph);

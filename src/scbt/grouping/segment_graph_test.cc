@@ -1,6 +1,9 @@
 // Structural properties of the gap-filled segment graph over random non-crossing segment sets.
 #include "scbt/grouping/segment_graph.h"
 
+#include <CGAL/Delaunay_triangulation_2.h>
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Triangulation_vertex_base_with_info_2.h>
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -324,6 +327,69 @@ TEST_P(SegmentGraphReuse, MatchesPlainNumberingAndReusedBuildsMatchFreshOnes) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Seeds, SegmentGraphReuse, ::testing::Range(0u, 100u));
+
+// The generated edges written the straightforward way: the vertices handed to CGAL's range
+// constructor in a shuffled order, every finite edge collected in an ordered set, the detected
+// ones removed.
+std::vector<std::pair<int, int>> plain_generated_edges(const SegmentGraph& graph,
+                                                       std::mt19937& rng) {
+  using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
+  using Vb = CGAL::Triangulation_vertex_base_with_info_2<int, Kernel>;
+  using Delaunay = CGAL::Delaunay_triangulation_2<Kernel, CGAL::Triangulation_data_structure_2<Vb>>;
+  std::vector<std::pair<Kernel::Point_2, int>> sites;
+  for (int v = 0; v < graph.num_vertices(); ++v) {
+    sites.emplace_back(Kernel::Point_2(graph.vertices[v].x, graph.vertices[v].y), v);
+  }
+  std::shuffle(sites.begin(), sites.end(), rng);
+  const Delaunay triangulation(sites.begin(), sites.end());
+  std::set<std::pair<int, int>> edges;
+  for (auto e = triangulation.finite_edges_begin(); e != triangulation.finite_edges_end(); ++e) {
+    const int u = e->first->vertex(Delaunay::cw(e->second))->info();
+    const int v = e->first->vertex(Delaunay::ccw(e->second))->info();
+    edges.emplace(std::min(u, v), std::max(u, v));
+  }
+  for (int k : graph.detected_edges) {
+    const GraphEdge& e = graph.edges[k];
+    edges.erase({std::min(e.u, e.v), std::max(e.u, e.v)});
+  }
+  return {edges.begin(), edges.end()};
+}
+
+class SegmentGraphGenerated : public ::testing::TestWithParam<unsigned> {};
+
+// The generated edges are exactly the Delaunay edges that are not detected, in (lower, higher)
+// vertex order, after the detected ones, whatever order the points are triangulated in: checked
+// on general segments and on grid segments, whose points are often cocircular (where the
+// Delaunay triangulation is not unique without CGAL's symbolic perturbation) or collinear.
+TEST_P(SegmentGraphGenerated, EqualsPlainTriangulationInAnyInsertionOrder) {
+  std::mt19937 rng(GetParam() * 13u + 5u);
+  std::uniform_int_distribution<int> grid(0, 5), count(1, 40);
+  std::vector<Segment> segments;
+  if (GetParam() % 2 == 0) {
+    segments = random_segments(rng, count(rng));
+  } else {
+    segments.resize(count(rng));
+    for (Segment& s : segments) {
+      s = {Point(10.0 * grid(rng), 10.0 * grid(rng)), Point(10.0 * grid(rng), 10.0 * grid(rng))};
+    }
+  }
+  const SegmentGraph graph = build_segment_graph(segments);
+  const int num_detected = static_cast<int>(graph.detected_edges.size());
+  for (int k = 0; k < num_detected; ++k) EXPECT_EQ(graph.detected_edges[k], k);
+  std::vector<std::pair<int, int>> generated;
+  for (int i = num_detected; i < graph.num_edges(); ++i) {
+    const GraphEdge& e = graph.edges[i];
+    EXPECT_FALSE(e.detected);
+    EXPECT_EQ(e.length, cv::norm(graph.vertices[e.u] - graph.vertices[e.v]));
+    EXPECT_EQ(e.weight, e.length);
+    generated.emplace_back(e.u, e.v);
+  }
+  for (int trial = 0; trial < 3; ++trial) {
+    EXPECT_EQ(generated, plain_generated_edges(graph, rng)) << "trial " << trial;
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(Seeds, SegmentGraphGenerated, ::testing::Range(0u, 200u));
 
 }  // namespace
 }  // namespace scbt
