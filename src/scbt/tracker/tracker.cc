@@ -5,6 +5,7 @@
 #include <opencv2/imgproc.hpp>
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 #include "scbt/geometry/polygon_io.h"
 #include "scbt/grouping/bdsp.h"
@@ -210,8 +211,14 @@ TrackResult Tracker::track(const cv::Mat& frame) {
     result.area_similarity = a->choice->similarity;
     if (options_.recover_by_motion) {
       reference_roi_ = a->roi;
-      // A deep copy (grey input is a view of the caller's frame) into the reused buffer.
-      gray_.copyTo(reference_gray_);
+      if (frame.channels() == 1) {
+        // Grey input is a view of the caller's frame: a deep copy, into the reused buffer.
+        gray_.copyTo(reference_gray_);
+      } else {
+        // gray_ holds its own conversion: hand it over instead of copying it; the next frame's
+        // conversion then reuses the old reference's buffer.
+        std::swap(gray_, reference_gray_);
+      }
     }
   } else {
     result.held = true;

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <opencv2/imgproc.hpp>
+#include <tuple>
 
 #include "scbt/tracker/tracker.h"
 
@@ -30,9 +31,15 @@ cv::Mat render_scene(unsigned seed) {
   return scene;
 }
 
-// The 640x480 view of the scene whose top-left corner is at `corner`.
-cv::Mat view(const cv::Mat& scene, cv::Point corner) {
-  return scene(cv::Rect(corner, cv::Size(640, 480))).clone();
+// The 640x480 view of the scene whose top-left corner is at `corner`, grey or BGR (the tracker
+// keeps its reference window differently for the two: a copy of a grey frame's view, its own
+// conversion of a colour one).
+cv::Mat view(const cv::Mat& scene, cv::Point corner, bool colour) {
+  const cv::Mat grey = scene(cv::Rect(corner, cv::Size(640, 480))).clone();
+  if (!colour) return grey;
+  cv::Mat bgr;
+  cv::cvtColor(grey, bgr, cv::COLOR_GRAY2BGR);
+  return bgr;
 }
 
 double mean_vertex_distance(const Polygon& tracked, const Polygon& truth) {
@@ -41,10 +48,11 @@ double mean_vertex_distance(const Polygon& tracked, const Polygon& truth) {
   return sum / static_cast<double>(tracked.size());
 }
 
-class RecoveryTest : public ::testing::TestWithParam<int> {};
+class RecoveryTest : public ::testing::TestWithParam<std::tuple<int, bool>> {};
 
 TEST_P(RecoveryTest, FollowsACameraSwingBeyondTheBand) {
-  const int seed = GetParam();
+  const int seed = std::get<0>(GetParam());
+  const bool colour = std::get<1>(GetParam());
   const cv::Mat scene = render_scene(100 + seed);
   const cv::Point start(160, 120);
   // The picture jumps by 34..46 px: far beyond the 20 px band around the previous boundary.
@@ -57,10 +65,12 @@ TEST_P(RecoveryTest, FollowsACameraSwingBeyondTheBand) {
     TrackerOptions options;
     options.recover_by_motion = recover;
     Tracker tracker(options);
-    tracker.init(view(scene, start), truth_before);
-    const TrackResult steady = tracker.track(view(scene, start));
+    tracker.init(view(scene, start, colour), truth_before);
+    const TrackResult steady = tracker.track(view(scene, start, colour));
     ASSERT_FALSE(steady.held);
-    const TrackResult moved = tracker.track(view(scene, start + swing));
+    // Two steady frames: the reference window handed over on the first is reused on the second.
+    ASSERT_FALSE(tracker.track(view(scene, start, colour)).held);
+    const TrackResult moved = tracker.track(view(scene, start + swing, colour));
     if (recover) {
       EXPECT_FALSE(moved.held);
       EXPECT_TRUE(moved.recovered);
@@ -72,7 +82,8 @@ TEST_P(RecoveryTest, FollowsACameraSwingBeyondTheBand) {
   }
 }
 
-INSTANTIATE_TEST_SUITE_P(Seeds, RecoveryTest, ::testing::Range(0, 4));
+INSTANTIATE_TEST_SUITE_P(SeedsGreyAndColour, RecoveryTest,
+                         ::testing::Combine(::testing::Range(0, 4), ::testing::Bool()));
 
 }  // namespace
 }  // namespace scbt
