@@ -232,12 +232,7 @@ TEST(EdLines, BandKeepsSegmentsNearBoundary) {
   const double radius = 28.0;
   int compared = 0, found_count = 0;
   for (unsigned seed = 300; seed < 330; ++seed) {
-    const BandCase c = band_case(seed, radius);
-    const Scene& scene = c.scene;
-    const Polygon& boundary = c.boundary;
-    const cv::Rect& window = c.window;
-    const cv::Mat& crop = c.crop;
-    const cv::Mat& band = c.band;
+    const auto& [scene, boundary, window, crop, band] = band_case(seed, radius);
     const std::vector<Segment> banded = run(crop, window.tl(), scene.image.size(), band);
     const std::vector<Segment> unbanded = run(crop, window.tl(), scene.image.size());
     for (const Segment& s : banded) {
@@ -275,12 +270,7 @@ TEST(EdLines, BandedDetectionReadsOnlyPixelsNearTheBand) {
   EdLines reused;
   int segments_seen = 0;
   for (unsigned seed = 500; seed < 520; ++seed) {
-    const BandCase c = band_case(seed, radius);
-    const Scene& scene = c.scene;
-    const Polygon& boundary = c.boundary;
-    const cv::Rect& window = c.window;
-    const cv::Mat& crop = c.crop;
-    const cv::Mat& band = c.band;
+    const auto& [scene, boundary, window, crop, band] = band_case(seed, radius);
     cv::Mat near;
     draw_band_mask(boundary, window.tl(), radius + 5.0, crop.size(), &near);
     const std::vector<Segment> expected = run(crop, window.tl(), scene.image.size(), band);
