@@ -10,6 +10,7 @@
 #include <opencv2/imgproc.hpp>
 #include <vector>
 
+#include "scbt/lines/band_mask.h"
 #include "scbt/lines/edlines.h"
 #include "scbt/lines/gaussian_5x5.h"
 #include "scbt/lines/line_detector.h"

@@ -26,7 +26,6 @@
 #include <vector>
 
 #include "scbt/geometry/polygon.h"
-#include "scbt/lines/band_mask.h"  // the band detect() restricts edges to
 
 namespace scbt {
 

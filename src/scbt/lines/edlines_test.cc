@@ -14,6 +14,7 @@
 #include <stdexcept>
 #include <vector>
 
+#include "scbt/lines/band_mask.h"
 #include "scbt/lines/line_detector.h"
 #include "scbt/synthetic/scene.h"
 

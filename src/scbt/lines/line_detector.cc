@@ -7,6 +7,7 @@
 #include <opencv2/ximgproc/fast_line_detector.hpp>
 #include <stdexcept>
 
+#include "scbt/lines/band_mask.h"
 #include "scbt/lines/edlines.h"
 
 namespace scbt {
