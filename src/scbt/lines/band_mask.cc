@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
-#include <cstring>
 #include <limits>
 
 namespace scbt {
@@ -47,12 +46,12 @@ void add_disc_chord(const Point& c, double y, double r2, double* from, double* t
   *to = std::max(*to, c.x + half);
 }
 
-// Sets the pixels within `radius` of segment pq on the mask's rows.
-void fill_capsule(const Point& p, const Point& q, double radius, cv::Mat* mask) {
-  const int width = mask->cols;
+// Adds the pixels within `radius` of segment pq to `band`.
+void add_capsule(const Point& p, const Point& q, double radius, RowSpans* band) {
+  const int width = band->size().width;
   const int top = static_cast<int>(std::max(0.0, std::ceil(std::min(p.y, q.y) - radius)));
-  const int bottom =
-      static_cast<int>(std::min(mask->rows - 1.0, std::floor(std::max(p.y, q.y) + radius)));
+  const int bottom = static_cast<int>(
+      std::min(band->size().height - 1.0, std::floor(std::max(p.y, q.y) + radius)));
   const double r2 = radius * radius;
   const Point d = q - p;
   const double length = std::sqrt(d.x * d.x + d.y * d.y);
@@ -71,21 +70,25 @@ void fill_capsule(const Point& p, const Point& q, double radius, cv::Mat* mask) 
     }
     add_disc_chord(p, y, r2, &from, &to);
     add_disc_chord(q, y, r2, &from, &to);
+    // Clamped first, so that the conversions below round as ceil and floor would (without
+    // SSE4.1, std::ceil and std::floor are calls, most of this loop's time).
+    from = std::max(from, -1.0);
+    to = std::min(to, 1.0 * width);
     if (!(from <= to)) continue;
-    const int first = static_cast<int>(std::max(0.0, std::ceil(from)));
-    const int last = static_cast<int>(std::min(width - 1.0, std::floor(to)));
-    if (first <= last) {
-      std::memset(mask->ptr<std::uint8_t>(y) + first, 255, static_cast<size_t>(last - first + 1));
-    }
+    int first = static_cast<int>(from), last = static_cast<int>(to);  // truncated towards 0
+    first += first < from;
+    last -= last > to;
+    first = std::max(first, 0);
+    last = std::min(last, width - 1);
+    if (first <= last) band->add(y, first, last);
   }
 }
 
 }  // namespace
 
-void draw_band_mask(const Polygon& boundary, cv::Point offset, double radius, cv::Size size,
-                    cv::Mat* mask) {
-  mask->create(size, CV_8UC1);
-  mask->setTo(0);
+void band_spans(const Polygon& boundary, cv::Point offset, double radius, cv::Size size,
+                RowSpans* band) {
+  band->reset(size);
   if (boundary.empty() || size.empty() || !(radius >= 0.0)) return;
   // Far beyond any window, yet small enough that squares and products stay exact enough.
   constexpr double kLimit = 1e6;
@@ -97,8 +100,15 @@ void draw_band_mask(const Polygon& boundary, cv::Point offset, double radius, cv
   };
   const size_t n = boundary.size();
   for (size_t i = 0; i < n; ++i) {
-    fill_capsule(local(boundary[i]), local(boundary[(i + 1) % n]), radius, mask);
+    add_capsule(local(boundary[i]), local(boundary[(i + 1) % n]), radius, band);
   }
+}
+
+void draw_band_mask(const Polygon& boundary, cv::Point offset, double radius, cv::Size size,
+                    cv::Mat* mask) {
+  thread_local RowSpans band;
+  band_spans(boundary, offset, radius, size, &band);
+  band.draw(mask);
 }
 
 }  // namespace scbt

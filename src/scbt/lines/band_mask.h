@@ -9,6 +9,7 @@
 #include <opencv2/core/mat.hpp>
 
 #include "scbt/geometry/polygon.h"
+#include "scbt/lines/row_spans.h"
 
 namespace scbt {
 
@@ -19,5 +20,9 @@ namespace scbt {
 // boundary or a radius that is negative or not a number.
 void draw_band_mask(const Polygon& boundary, cv::Point offset, double radius, cv::Size size,
                     cv::Mat* mask);
+
+// The same pixels as spans per row (`band` reset to `size`): what the tracker's detector takes.
+void band_spans(const Polygon& boundary, cv::Point offset, double radius, cv::Size size,
+                RowSpans* band);
 
 }  // namespace scbt

@@ -301,6 +301,34 @@ TEST(EdLines, BandedDetectionReadsOnlyPixelsNearTheBand) {
   EXPECT_GT(segments_seen, 100);
 }
 
+// Smoothing and gradients computed only near the band give the segments of the whole window's,
+// through windows of changing sizes (the detector's buffers then hold other windows' values).
+TEST(EdLines, ComputingNearTheBandOnlyChangesNothing) {
+  EdLinesParams everywhere;
+  everywhere.compute_near_band_only = false;
+  EdLines near_only, whole(everywhere);
+  RowSpans spans;
+  int segments_seen = 0;
+  for (unsigned seed = 600; seed < 640; ++seed) {
+    const double radius = 8.0 + (seed % 5) * 6.0;
+    const auto& [scene, boundary, window, crop, band] = band_case(seed, radius);
+    band_spans(boundary, window.tl(), radius, crop.size(), &spans);
+    std::vector<Segment> expected, got, from_mask;
+    whole.detect(crop, window.tl(), scene.image.size(), &spans, &expected);
+    near_only.detect(crop, window.tl(), scene.image.size(), &spans, &got);
+    near_only.detect(crop, window.tl(), scene.image.size(), band, &from_mask);
+    segments_seen += static_cast<int>(expected.size());
+    for (const std::vector<Segment>* result : {&got, &from_mask}) {
+      ASSERT_EQ(result->size(), expected.size()) << "seed " << seed;
+      for (size_t i = 0; i < expected.size(); ++i) {
+        EXPECT_EQ((*result)[i].a, expected[i].a) << "seed " << seed;
+        EXPECT_EQ((*result)[i].b, expected[i].b) << "seed " << seed;
+      }
+    }
+  }
+  EXPECT_GT(segments_seen, 200);
+}
+
 TEST(EdLines, Deterministic) {
   for (unsigned seed = 400; seed < 405; ++seed) {
     const Scene scene = random_scene(seed, 6.0);

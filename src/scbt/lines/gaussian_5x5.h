@@ -8,11 +8,21 @@
 
 #include <opencv2/core/mat.hpp>
 
+#include "scbt/lines/row_spans.h"
+
 namespace scbt {
 
 // Smooths `gray` (CV_8UC1, any stride, any size) into *out (CV_8UC1 of gray's size; reallocated
 // only when its size or type differs). `out` must not share gray's pixels. Throws
 // std::invalid_argument for another type.
 void gaussian_blur_5x5(const cv::Mat& gray, cv::Mat* out);
+
+// The same, computed only on the pixels of `where` (a set on gray's window), for a detector
+// that needs the smoothed image near a boundary only. A pixel (r, c) of `where` comes out as the
+// whole image's blur when column c is in `where` on each row within two of r (reflected at the
+// window's ends, as the blur reads them); other pixels of `where` come out unspecified, and the
+// pixels outside `where` are left as they were. Throws std::invalid_argument for another type or
+// a `where` of another size.
+void gaussian_blur_5x5(const cv::Mat& gray, const RowSpans& where, cv::Mat* out);
 
 }  // namespace scbt

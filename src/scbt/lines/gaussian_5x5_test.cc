@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <opencv2/imgproc.hpp>
+#include <random>
 #include <stdexcept>
 
 namespace scbt {
@@ -78,6 +79,55 @@ TEST(Gaussian5x5, ReusesTheOutputAndRejectsOtherTypes) {
   EXPECT_TRUE(empty.empty());
   EXPECT_THROW(gaussian_blur_5x5(cv::Mat(4, 4, CV_8UC3), &out), std::invalid_argument);
   EXPECT_THROW(gaussian_blur_5x5(cv::Mat(4, 4, CV_16UC1), &out), std::invalid_argument);
+}
+
+// Computed on a set of spans only: a pixel whose column is in the set on the rows within two of
+// it comes out as the whole blur's; pixels outside the set keep their old values.
+TEST(Gaussian5x5, OnSpansEqualsTheWholeBlurWhereItsRowsAreThere) {
+  std::mt19937 rng(3);
+  int checked = 0;
+  for (int trial = 0; trial < 30; ++trial) {
+    const cv::Size size(5 + trial * 13 % 120, 5 + trial * 7 % 50);
+    const cv::Mat gray = random_image(size, 100 + trial);
+    RowSpans where;
+    where.reset(size);
+    std::uniform_int_distribution<int> column(-3, size.width + 3), length(0, size.width / 2);
+    for (int r = 0; r < size.height; ++r) {
+      for (int k = 0; k < 3; ++k) {
+        const int first = column(rng);
+        where.add(r, first, first + length(rng));
+      }
+    }
+    cv::Mat inside;
+    where.draw(&inside);
+    const cv::Mat before = random_image(size, 900 + trial);
+    cv::Mat ours = before.clone();
+    gaussian_blur_5x5(gray, where, &ours);
+    const cv::Mat whole = opencv_blur(gray);
+    for (int r = 0; r < size.height; ++r) {
+      for (int c = 0; c < size.width; ++c) {
+        if (!inside.at<uchar>(r, c)) {
+          EXPECT_EQ(ours.at<uchar>(r, c), before.at<uchar>(r, c)) << r << "," << c;
+          continue;
+        }
+        bool rows_there = true;
+        for (int q = r - 2; q <= r + 2; ++q) {
+          const int reflected = q < 0 ? -q : (q >= size.height ? 2 * size.height - 2 - q : q);
+          rows_there = rows_there && inside.at<uchar>(reflected, c);
+        }
+        if (!rows_there) continue;
+        ++checked;
+        EXPECT_EQ(ours.at<uchar>(r, c), whole.at<uchar>(r, c))
+            << "trial " << trial << " " << r << "," << c;
+      }
+    }
+  }
+  EXPECT_GT(checked, 2000);
+  RowSpans wrong;
+  wrong.reset(cv::Size(3, 3));
+  cv::Mat out;
+  EXPECT_THROW(gaussian_blur_5x5(random_image(cv::Size(4, 4), 1), wrong, &out),
+               std::invalid_argument);
 }
 
 }  // namespace

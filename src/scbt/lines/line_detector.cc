@@ -43,9 +43,9 @@ class OwnEdLinesDetector : public LineDetector {
     if (boundary.empty() || !(radius > 0.0) || !std::isfinite(radius)) {
       return detect_in(crop, offset, full_size);
     }
-    draw_band_mask(boundary, offset, radius, crop.size(), &band_);
+    band_spans(boundary, offset, radius, crop.size(), &band_);
     std::vector<Segment> segments;
-    edlines_.detect(crop, offset, full_size, band_, &segments);
+    edlines_.detect(crop, offset, full_size, &band_, &segments);
     return segments;
   }
 
@@ -63,7 +63,7 @@ class OwnEdLinesDetector : public LineDetector {
   }
 
   EdLines edlines_;
-  cv::Mat band_;
+  RowSpans band_;
 };
 
 // OpenCV ximgproc's EdgeDrawing (EDLines), with a guard against its heap overflow.
