@@ -56,6 +56,14 @@ TEST(Gaussian5x5, MatchesOpenCvOnFrameSizedNoiseAndOnExtremes) {
   }
   gaussian_blur_5x5(checker, &ours);
   EXPECT_EQ(differing_pixels(ours, opencv_blur(checker)), 0);
+
+  // Random 0 / 255 pixels: sums of every size near every rounding step of the vertical pass.
+  for (int seed = 0; seed < 20; ++seed) {
+    cv::Mat binary = random_image(cv::Size(97, 61), 40 + seed);
+    cv::threshold(binary, binary, 127, 255, cv::THRESH_BINARY);
+    gaussian_blur_5x5(binary, &ours);
+    EXPECT_EQ(differing_pixels(ours, opencv_blur(binary)), 0) << "seed " << seed;
+  }
 }
 
 TEST(Gaussian5x5, AViewIsSmoothedAsItsOwnImage) {
