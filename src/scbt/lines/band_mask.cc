@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <vector>
 
 namespace scbt {
 namespace {
@@ -46,12 +47,20 @@ void add_disc_chord(const Point& c, double y, double r2, double* from, double* t
   *to = std::max(*to, c.x + half);
 }
 
-// Adds the pixels within `radius` of segment pq to `band`.
-void add_capsule(const Point& p, const Point& q, double radius, RowSpans* band) {
-  const int width = band->size().width;
+struct RowInterval {
+  int row, first, last;  // columns first .. last of `row`
+};
+
+// Appends, row by row, the pixels within `radius` of segment pq or of the disc around q, but
+// not those only the disc around p reaches: around a closed polyline every vertex is the end q
+// of one edge, so each vertex disc is computed once, and the union is the same. The segment's
+// rectangle and q's disc are a convex set (half a capsule), so each row holds one interval.
+void append_half_capsule(const Point& p, const Point& q, double radius, cv::Size size,
+                         std::vector<RowInterval>* out) {
+  const int width = size.width;
   const int top = static_cast<int>(std::max(0.0, std::ceil(std::min(p.y, q.y) - radius)));
-  const int bottom = static_cast<int>(
-      std::min(band->size().height - 1.0, std::floor(std::max(p.y, q.y) + radius)));
+  const int bottom =
+      static_cast<int>(std::min(size.height - 1.0, std::floor(std::max(p.y, q.y) + radius)));
   const double r2 = radius * radius;
   const Point d = q - p;
   const double length = std::sqrt(d.x * d.x + d.y * d.y);
@@ -68,7 +77,6 @@ void add_capsule(const Point& p, const Point& q, double radius, RowSpans* band) 
       across.clip(y, &low, &high);
       if (low <= high) from = low, to = high;
     }
-    add_disc_chord(p, y, r2, &from, &to);
     add_disc_chord(q, y, r2, &from, &to);
     // Clamped first, so that the conversions below round as ceil and floor would (without
     // SSE4.1, std::ceil and std::floor are calls, most of this loop's time).
@@ -80,7 +88,7 @@ void add_capsule(const Point& p, const Point& q, double radius, RowSpans* band) 
     last -= last > to;
     first = std::max(first, 0);
     last = std::min(last, width - 1);
-    if (first <= last) band->add(y, first, last);
+    if (first <= last) out->push_back({y, first, last});
   }
 }
 
@@ -98,9 +106,37 @@ void band_spans(const Polygon& boundary, cv::Point offset, double radius, cv::Si
     return Point(std::isnan(x) ? kLimit : std::clamp(x, -kLimit, kLimit),
                  std::isnan(y) ? kLimit : std::clamp(y, -kLimit, kLimit));
   };
+  thread_local std::vector<RowInterval> intervals, by_row;
+  thread_local std::vector<int> row_start;
+  intervals.clear();
   const size_t n = boundary.size();
   for (size_t i = 0; i < n; ++i) {
-    add_capsule(local(boundary[i]), local(boundary[(i + 1) % n]), radius, band);
+    append_half_capsule(local(boundary[i]), local(boundary[(i + 1) % n]), radius, size, &intervals);
+  }
+  // Grouped by row (counting sort), then each row's handful sorted by column and merged: cheaper
+  // than merging each interval into the row's spans as it comes.
+  row_start.assign(static_cast<size_t>(size.height) + 1, 0);
+  for (const RowInterval& i : intervals) ++row_start[i.row + 1];
+  for (int r = 0; r < size.height; ++r) row_start[r + 1] += row_start[r];
+  by_row.resize(intervals.size());
+  for (const RowInterval& i : intervals) by_row[row_start[i.row]++] = i;
+  for (int r = size.height; r > 0; --r) row_start[r] = row_start[r - 1];
+  row_start[0] = 0;
+  for (int r = 0; r < size.height; ++r) {
+    RowInterval* begin = by_row.data() + row_start[r];
+    RowInterval* end = by_row.data() + row_start[r + 1];
+    for (RowInterval* i = begin + 1; i < end; ++i) {  // insertion sort by first column
+      const RowInterval moving = *i;
+      RowInterval* at = i;
+      for (; at > begin && (at - 1)->first > moving.first; --at) *at = *(at - 1);
+      *at = moving;
+    }
+    for (const RowInterval* i = begin; i < end;) {
+      const int first = i->first;
+      int last = i->last;
+      for (++i; i < end && i->first <= last + 1; ++i) last = std::max(last, i->last);
+      band->add(r, first, last);
+    }
   }
 }
 
