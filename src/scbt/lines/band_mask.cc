@@ -56,14 +56,21 @@ struct RowInterval {
 // of one edge, so each vertex disc is computed once, and the union is the same. The segment's
 // rectangle and q's disc are a convex set (half a capsule), so each row holds one interval.
 void append_half_capsule(const Point& p, const Point& q, double radius, cv::Size size,
-                         std::vector<RowInterval>* out) {
+                         std::vector<RowInterval>* out, std::vector<int>* last_of_row) {
   const int width = size.width;
-  const int top = static_cast<int>(std::max(0.0, std::ceil(std::min(p.y, q.y) - radius)));
-  const int bottom =
-      static_cast<int>(std::min(size.height - 1.0, std::floor(std::max(p.y, q.y) + radius)));
   const double r2 = radius * radius;
   const Point d = q - p;
   const double length = std::sqrt(d.x * d.x + d.y * d.y);
+  // Rows it can reach (a row more each way against rounding): q's disc, and the rectangle,
+  // whose corners lie r |d.x| / |d| above and below the segment's ends.
+  double reach_top = q.y - radius, reach_bottom = q.y + radius;
+  if (length > 0.0) {
+    const double rise = radius * std::abs(d.x) / length;
+    reach_top = std::min(reach_top, std::min(p.y, q.y) - rise);
+    reach_bottom = std::max(reach_bottom, std::max(p.y, q.y) + rise);
+  }
+  const int top = static_cast<int>(std::max(0.0, std::ceil(reach_top) - 1.0));
+  const int bottom = static_cast<int>(std::min(size.height - 1.0, std::floor(reach_bottom) + 1.0));
   // The rectangle between the discs: 0 <= (x - p).d <= |d|^2 and |(x - p) x d| <= r |d|, both
   // linear in the column x and the row y.
   const RowConstraint along(d.x, -p.x * d.x - p.y * d.y, d.y, 0.0, length * length);
@@ -88,7 +95,18 @@ void append_half_capsule(const Point& p, const Point& q, double radius, cv::Size
     last -= last > to;
     first = std::max(first, 0);
     last = std::min(last, width - 1);
-    if (first <= last) out->push_back({y, first, last});
+    if (first > last) continue;
+    // Neighbouring edges' intervals on a row mostly overlap: the previous one of this row
+    // takes in this one when they overlap or touch, which leaves few for band_spans to sort.
+    int& previous = (*last_of_row)[y];
+    RowInterval* merged = previous >= 0 ? &(*out)[previous] : nullptr;
+    if (merged != nullptr && first <= merged->last + 1 && merged->first <= last + 1) {
+      merged->first = std::min(merged->first, first);
+      merged->last = std::max(merged->last, last);
+    } else {
+      previous = static_cast<int>(out->size());
+      out->push_back({y, first, last});
+    }
   }
 }
 
@@ -107,11 +125,13 @@ void band_spans(const Polygon& boundary, cv::Point offset, double radius, cv::Si
                  std::isnan(y) ? kLimit : std::clamp(y, -kLimit, kLimit));
   };
   thread_local std::vector<RowInterval> intervals, by_row;
-  thread_local std::vector<int> row_start;
+  thread_local std::vector<int> row_start, last_of_row;
   intervals.clear();
+  last_of_row.assign(size.height, -1);
   const size_t n = boundary.size();
   for (size_t i = 0; i < n; ++i) {
-    append_half_capsule(local(boundary[i]), local(boundary[(i + 1) % n]), radius, size, &intervals);
+    append_half_capsule(local(boundary[i]), local(boundary[(i + 1) % n]), radius, size, &intervals,
+                        &last_of_row);
   }
   // Grouped by row (counting sort), then each row's handful sorted by column and merged: cheaper
   // than merging each interval into the row's spans as it comes.
