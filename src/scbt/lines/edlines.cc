@@ -207,9 +207,9 @@ void EdLines::detect(const cv::Mat& gray, cv::Point offset, cv::Size full_size,
 // band as spans), only where the edge walks and anchors of the band can read them: walks and
 // anchors read gradients and directions up to one pixel from the band, the gradients read the
 // smoothed image one pixel further, and a smoothed row reads the horizontally filtered rows two
-// above and below. The 16-column blocks within four pixels of the band cover all of it; values
-// elsewhere are stale or unspecified and never read. Otherwise on the whole window, with the
-// band, if any, as a mask.
+// above and below. The blocks of kCoverBlock columns within four pixels of the band cover all of
+// it; values elsewhere are stale or unspecified and never read. Otherwise on the whole window, with
+// the band, if any, as a mask.
 void EdLines::smooth_and_gradient(const cv::Mat& gray, const cv::Mat& band_mask,
                                   const RowSpans* near_band) {
   const int w = width_, h = height_;

@@ -88,7 +88,9 @@ void RowSpans::assign_from_mask(const cv::Mat& mask) {
 }
 
 void cover_with_blocks(const RowSpans& spans, int grow, RowSpans* out) {
-  constexpr int kBlock = 16;
+  constexpr int kBlock = kCoverBlock;
+  // Spans of whole 32-column chunks where the window allows (for_each_pixel in pixel_loop.h).
+  constexpr int kMinBlocks = 32 / kBlock;
   const cv::Size size = spans.size();
   out->reset(size);
   if (size.width == 0 || size.height == 0) return;
@@ -132,13 +134,9 @@ void cover_with_blocks(const RowSpans& spans, int grow, RowSpans* out) {
         const std::uint64_t rest = ~(word >> start);
         const int length = rest == 0 ? 64 - start : __builtin_ctzll(rest);
         int first = 64 * k + start, last = first + length - 1;
-        // At least two blocks, so that the row loops run whole 32-column chunks.
-        if (first == last) {
-          if (last + 1 < num_blocks) {
-            ++last;
-          } else if (first > 0) {
-            --first;
-          }
+        if (last - first + 1 < kMinBlocks) {  // grown to the right, then to the left
+          last = std::min(num_blocks - 1, first + kMinBlocks - 1);
+          first = std::max(0, last - kMinBlocks + 1);
         }
         out->add(r, first * kBlock, std::min((last + 1) * kBlock, size.width) - 1);
         word = start + length >= 64 ? 0 : word & (~std::uint64_t{0} << (start + length));

@@ -55,10 +55,11 @@ class RowSpans {
   mutable std::vector<ColumnSpan> flat_spans_;
 };
 
-// The 16-column blocks (columns 16 k .. 16 k + 15, clipped to the window) that hold a pixel
-// within Chebyshev distance `grow` of `spans`, as spans of `out` (same window), each at least
-// two blocks long where the window allows: the detector's vectorised row loops then run whole
-// 32-column chunks (for_each_pixel in pixel_loop.h).
+// The blocks of kCoverBlock columns (k kCoverBlock .. (k + 1) kCoverBlock - 1, clipped to the
+// window) that hold a pixel within Chebyshev distance `grow` of `spans`, as spans of `out` (same
+// window), each at least 32 columns long where the window allows: the detector's vectorised row
+// loops then run whole 32-column chunks (for_each_pixel in pixel_loop.h).
+constexpr int kCoverBlock = 8;
 void cover_with_blocks(const RowSpans& spans, int grow, RowSpans* out);
 
 }  // namespace scbt

@@ -68,7 +68,7 @@ TEST(RowSpans, RejectsAMaskOfAnotherType) {
 }
 
 TEST(RowSpans, BlocksCoverTheGrownSetWithWholeBlocksOnly) {
-  constexpr int kBlock = 16;
+  constexpr int kBlock = kCoverBlock;
   std::mt19937 rng(5);
   for (int trial = 0; trial < 40; ++trial) {
     const cv::Size size(20 + trial * 37 % 1500, 3 + trial % 40);  // some wider than 64 blocks
@@ -91,11 +91,11 @@ TEST(RowSpans, BlocksCoverTheGrownSetWithWholeBlocksOnly) {
       for (const ColumnSpan* s = blocks.begin(r); s != blocks.end(r); ++s) {
         EXPECT_EQ(s->begin % kBlock, 0);
         EXPECT_TRUE(s->end % kBlock == 0 || s->end == size.width);
-        EXPECT_TRUE(s->end - s->begin > kBlock || s->end - s->begin == size.width)
-            << "a span of one block";
-        // Every block touches the grown set, or is the one added to a single block beside it.
+        EXPECT_TRUE(s->end - s->begin > 32 - kBlock || s->end - s->begin == size.width)
+            << "a span shorter than 32 columns";
+        // Every block touches the grown set, or is among those added to reach 32 columns.
         for (int b = s->begin; b < s->end; b += kBlock) {
-          const int from = std::max(b - kBlock, 0), to = std::min(b + 2 * kBlock, size.width);
+          const int from = std::max(b - 32, 0), to = std::min(b + 32 + kBlock, size.width);
           EXPECT_GT(cv::countNonZero(grown.row(r).colRange(from, to)), 0)
               << "trial " << trial << " row " << r << " block at " << b;
         }
