@@ -206,16 +206,17 @@ void EdLines::detect(const cv::Mat& gray, cv::Point offset, cv::Size full_size,
 // Smoothing, gradients and edge directions (cleared outside the band). With `near_band` (the
 // band as spans), only where the edge walks and anchors of the band can read them: walks and
 // anchors read gradients and directions up to one pixel from the band, the gradients read the
-// smoothed image one pixel further, and a smoothed row reads the horizontally filtered rows two
-// above and below. The blocks of kCoverBlock columns within four pixels of the band cover all of
-// it; values elsewhere are stale or unspecified and never read. Otherwise on the whole window, with
+// smoothed image one pixel further (two from the band), and a smoothed row reads the
+// horizontally filtered rows two above and below (four rows from the band). The blocks of
+// kCoverBlock columns within two columns and four rows of the band cover all of it; values
+// elsewhere are stale or unspecified and never read. Otherwise on the whole window, with
 // the band, if any, as a mask.
 void EdLines::smooth_and_gradient(const cv::Mat& gray, const cv::Mat& band_mask,
                                   const RowSpans* near_band) {
   const int w = width_, h = height_;
   const size_t n = static_cast<size_t>(w) * h;
   if (near_band != nullptr) {
-    cover_with_blocks(*near_band, 4, &blocks_);
+    cover_with_blocks(*near_band, 2, 4, &blocks_);
     // A buffer kept across windows of changing size (a cv::Mat would reallocate each time).
     if (smooth_pixels_.size() < n) smooth_pixels_.resize(n);
     smooth_ = cv::Mat(h, w, CV_8UC1, smooth_pixels_.data());

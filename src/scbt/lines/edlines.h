@@ -64,8 +64,8 @@ class EdLines {
               std::vector<Segment>* out);
   // The same with the band as spans per row (band_spans in band_mask.h; nullptr: no band).
   // With the default smoothing (sigma 1) and scan interval (1), smoothing and gradients are
-  // computed only in the blocks of columns within four pixels of the band (all that the edge
-  // walks and anchors read), not on the whole window (compute_near_band_only).
+  // computed only in the blocks of columns within two columns and four rows of the band (all that
+  // the edge walks and anchors read), not on the whole window (compute_near_band_only).
   void detect(const cv::Mat& gray, cv::Point offset, cv::Size full_size, const RowSpans* band,
               std::vector<Segment>* out);
 

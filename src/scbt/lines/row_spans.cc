@@ -87,26 +87,27 @@ void RowSpans::assign_from_mask(const cv::Mat& mask) {
   }
 }
 
-void cover_with_blocks(const RowSpans& spans, int grow, RowSpans* out) {
+void cover_with_blocks(const RowSpans& spans, int grow_columns, int grow_rows, RowSpans* out) {
   constexpr int kBlock = kCoverBlock;
   // Spans of whole 32-column chunks where the window allows (for_each_pixel in pixel_loop.h).
   constexpr int kMinBlocks = 32 / kBlock;
   const cv::Size size = spans.size();
   out->reset(size);
   if (size.width == 0 || size.height == 0) return;
-  grow = std::max(grow, 0);
+  grow_columns = std::max(grow_columns, 0);
+  grow_rows = std::max(grow_rows, 0);
   const int num_blocks = (size.width + kBlock - 1) / kBlock;
   const int words = (num_blocks + 63) / 64;
   // Per row, a bit per block: first the blocks each row's own spans reach (grown sideways), then
-  // OR-ed over the rows within `grow` above and below.
+  // OR-ed over the rows within grow_rows above and below.
   thread_local std::vector<std::uint64_t> own, grown;
   own.assign(static_cast<size_t>(size.height) * words, 0);
   grown.assign(own.size(), 0);
   for (int r = 0; r < size.height; ++r) {
     std::uint64_t* bits = own.data() + static_cast<size_t>(r) * words;
     for (const ColumnSpan* s = spans.begin(r); s != spans.end(r); ++s) {
-      const int first = std::max(s->begin - grow, 0) / kBlock;
-      const int last = std::min(s->end - 1 + grow, size.width - 1) / kBlock;
+      const int first = std::max(s->begin - grow_columns, 0) / kBlock;
+      const int last = std::min(s->end - 1 + grow_columns, size.width - 1) / kBlock;
       for (int k = first / 64; k <= last / 64; ++k) {
         // Bits max(first, 64 k) .. min(last, 64 k + 63) of word k.
         const int low = std::max(first - 64 * k, 0), high = std::min(last - 64 * k, 63);
@@ -116,7 +117,7 @@ void cover_with_blocks(const RowSpans& spans, int grow, RowSpans* out) {
   }
   for (int r = 0; r < size.height; ++r) {
     std::uint64_t* bits = grown.data() + static_cast<size_t>(r) * words;
-    const int from = std::max(r - grow, 0), to = std::min(r + grow, size.height - 1);
+    const int from = std::max(r - grow_rows, 0), to = std::min(r + grow_rows, size.height - 1);
     if (words == 1) {  // windows up to 1024 columns: no loop over words
       std::uint64_t any = 0;
       for (int q = from; q <= to; ++q) any |= own[q];

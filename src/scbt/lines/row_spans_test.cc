@@ -80,11 +80,11 @@ TEST(RowSpans, BlocksCoverTheGrownSetWithWholeBlocksOnly) {
       if (r % 5 != 0) mask.row(r).setTo(0);
     }
     spans.assign_from_mask(mask);
-    const int grow = trial % 6;
-    cover_with_blocks(spans, grow, &blocks);
+    const int grow_columns = trial % 6, grow_rows = trial % 4;
+    cover_with_blocks(spans, grow_columns, grow_rows, &blocks);
     expect_well_formed(blocks);
     cv::Mat grown, covered;
-    cv::dilate(mask, grown, cv::Mat::ones(2 * grow + 1, 2 * grow + 1, CV_8UC1));
+    cv::dilate(mask, grown, cv::Mat::ones(2 * grow_rows + 1, 2 * grow_columns + 1, CV_8UC1));
     blocks.draw(&covered);
     EXPECT_EQ(cv::countNonZero(grown & ~covered), 0) << "trial " << trial << ": not covered";
     for (int r = 0; r < size.height; ++r) {
