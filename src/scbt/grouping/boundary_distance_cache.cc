@@ -4,6 +4,8 @@
 #include <cmath>
 #include <limits>
 
+#include "scbt/geometry/segment_distance_row.h"
+
 namespace scbt {
 namespace {
 
@@ -17,18 +19,23 @@ void BoundaryDistanceCache::reset(const SegmentGraph& graph, const Polygon& prev
   query_.reset(previous);
   vertex_distance_.assign(graph.vertices.size(), kNotComputed);
   midpoint_distance_.assign(graph.edges.size(), kNotComputed);
+  edge_term_.assign(2 * graph.edges.size(), EdgeTerm{kNotComputed, kNotComputed});
   row_offset_.assign(graph.edges.size(), -1);
   rows_.clear();
 
   // Samples in the order boundary_distance visits them: edge (j, i) for i = 0.. with j = i - 1
   // cyclically contributes its start j, its midpoint and its end i.
   const size_t n = previous.size();
-  samples_.resize(2 * n);
+  sample_x_.resize(2 * n);
+  sample_y_.resize(2 * n);
   previous_edge_length_.resize(n);
   previous_length_ = 0.0;
   for (size_t i = 0, j = n - 1; i < n; j = i++) {
-    samples_[2 * i] = previous[i];
-    samples_[2 * i + 1] = (previous[j] + previous[i]) * 0.5;  // midpoint of the edge into i
+    const Point midpoint = (previous[j] + previous[i]) * 0.5;  // of the edge into i
+    sample_x_[2 * i] = previous[i].x;
+    sample_y_[2 * i] = previous[i].y;
+    sample_x_[2 * i + 1] = midpoint.x;
+    sample_y_[2 * i + 1] = midpoint.y;
     previous_edge_length_[i] = cv::norm(previous[i] - previous[j]);
     previous_length_ += previous_edge_length_[i];
   }
@@ -56,23 +63,38 @@ double BoundaryDistanceCache::midpoint_distance(int edge, const Point& a, const 
   return d;
 }
 
+BoundaryDistanceCache::EdgeTerm BoundaryDistanceCache::edge_term(int edge, int from, int to) {
+  const Point& a = graph_->vertices[from];
+  const Point& b = graph_->vertices[to];
+  EdgeTerm term;
+  term.length = cv::norm(b - a);
+  const double mid = midpoint_distance(edge, a, b);
+  term.weighted = term.length * (vertex_distance(from) + 4.0 * mid + vertex_distance(to)) / 6.0;
+  return term;
+}
+
 double BoundaryDistanceCache::mean_distance_from_cycle(const std::vector<int>& cycle) {
-  const std::vector<Point>& points = graph_->vertices;
   const size_t n = cycle.size();
   double weighted = 0.0, total_length = 0.0;
   for (size_t i = 0, j = n - 1; i < n; j = i++) {
-    const Point& a = points[cycle[j]];
-    const Point& b = points[cycle[i]];
-    const double length = cv::norm(b - a);
-    const double mid = midpoint_distance(edge_between(cycle[j], cycle[i]), a, b);
-    weighted += length * (vertex_distance(cycle[j]) + 4.0 * mid + vertex_distance(cycle[i])) / 6.0;
-    total_length += length;
+    const int edge = edge_between(cycle[j], cycle[i]);
+    EdgeTerm term;
+    if (edge >= 0) {
+      // Near-tied cycles share most edges: each edge's term is computed once per direction.
+      EdgeTerm& cached = edge_term_[2 * edge + (graph_->edges[edge].u == cycle[j] ? 0 : 1)];
+      if (std::isnan(cached.weighted)) cached = edge_term(edge, cycle[j], cycle[i]);
+      term = cached;
+    } else {
+      term = edge_term(edge, cycle[j], cycle[i]);
+    }
+    weighted += term.weighted;
+    total_length += term.length;
   }
   return total_length > 0.0 ? weighted / total_length : 0.0;
 }
 
 const double* BoundaryDistanceCache::sample_distances_sq(int edge, const Point& a, const Point& b) {
-  const size_t m = samples_.size();
+  const size_t m = sample_x_.size();
   double* row;
   if (edge >= 0 && row_offset_[edge] >= 0) return rows_.data() + row_offset_[edge];
   if (edge >= 0) {
@@ -83,19 +105,19 @@ const double* BoundaryDistanceCache::sample_distances_sq(int edge, const Point& 
     scratch_row_.resize(m);
     row = scratch_row_.data();
   }
-  for (size_t s = 0; s < m; ++s) row[s] = distance_sq_to_segment(samples_[s], a, b);
+  distance_sq_row_to_segment(sample_x_.data(), sample_y_.data(), m, a, b, row);
   return row;
 }
 
 double BoundaryDistanceCache::mean_distance_to_cycle(const std::vector<int>& cycle) {
-  const size_t m = samples_.size();
+  const size_t m = sample_x_.size();
   const size_t n = cycle.size();
   if (m == 0 || !(previous_length_ > 0.0)) return 0.0;
   nearest_sq_.assign(m, std::numeric_limits<double>::infinity());
   const std::vector<Point>& points = graph_->vertices;
   if (n == 1) {
     for (size_t s = 0; s < m; ++s) {
-      const Point d = samples_[s] - points[cycle[0]];
+      const Point d = Point(sample_x_[s], sample_y_[s]) - points[cycle[0]];
       nearest_sq_[s] = d.x * d.x + d.y * d.y;
     }
   }

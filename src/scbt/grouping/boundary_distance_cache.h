@@ -41,6 +41,13 @@ class BoundaryDistanceCache {
   int edge_between(int u, int v) const;
   double vertex_distance(int v);
   double midpoint_distance(int edge, const Point& a, const Point& b);
+  // One edge's share of mean_distance_from_cycle, walked from a to b: its length and its
+  // length-weighted Simpson sum.
+  struct EdgeTerm {
+    double length;
+    double weighted;
+  };
+  EdgeTerm edge_term(int edge, int from, int to);
   // Squared distances from every sample of the previous boundary to segment [a, b], cached
   // under `edge` when it is >= 0.
   const double* sample_distances_sq(int edge, const Point& a, const Point& b);
@@ -52,12 +59,16 @@ class BoundaryDistanceCache {
   // NaN: not computed yet.
   std::vector<double> vertex_distance_;
   std::vector<double> midpoint_distance_;
+  // Per edge and direction (2 * edge, + 1 when walked from v to u), its EdgeTerm: a cycle's
+  // mean distance is then a sum of cached terms, added in the same order as before. The sum
+  // inside a term is not symmetric in rounding, hence one per direction.
+  std::vector<EdgeTerm> edge_term_;
   // Samples of the previous boundary: its vertex i is sample 2i, the midpoint of its edge
-  // (i, i+1) is sample 2i+1.
-  std::vector<Point> samples_;
+  // (i, i+1) is sample 2i+1. Coordinates in two arrays, so that a row's loop vectorises.
+  std::vector<double> sample_x_, sample_y_;
   std::vector<double> previous_edge_length_;
   double previous_length_ = 0.0;
-  // Per edge, the offset of its row of samples_.size() squared distances in `rows_`; -1 if none.
+  // Per edge, the offset of its row of sample_x_.size() squared distances in `rows_`; -1 if none.
   std::vector<int> row_offset_;
   std::vector<double> rows_;
   std::vector<double> scratch_row_;
