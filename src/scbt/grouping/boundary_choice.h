@@ -58,13 +58,15 @@ std::optional<BoundaryChoice> choose_boundary_stable(const std::vector<CycleCand
 // of candidates that carry `gap_length` and `area`, whose cycles (graph vertex ids) are listed on
 // demand by `list_vertices(index, std::vector<int>* out)`: only near-tied candidates are ever
 // listed. Chooses exactly as choose_boundary_stable does (distances equal up to rounding).
+// `known` (optional): distances to `previous` already computed for the graph's segments.
 class StableChooser {
  public:
   template <class Candidate, class ListVertices>
   std::optional<BoundaryChoice> choose(const std::vector<Candidate>& candidates,
                                        ListVertices&& list_vertices, const SegmentGraph& graph,
                                        const Polygon& previous, double min_similarity,
-                                       double tolerance);
+                                       double tolerance,
+                                       const KnownSegmentDistances* known = nullptr);
 
  private:
   struct NearTie {
@@ -90,7 +92,8 @@ std::optional<BoundaryChoice> StableChooser::choose(const std::vector<Candidate>
                                                     ListVertices&& list_vertices,
                                                     const SegmentGraph& graph,
                                                     const Polygon& previous, double min_similarity,
-                                                    double tolerance) {
+                                                    double tolerance,
+                                                    const KnownSegmentDistances* known) {
   const double previous_area = area(previous);
   BoundaryChoice best;
   // Each candidate's cost, kept for the near-tie pass below (NaN: not admissible, so that no
@@ -126,7 +129,7 @@ std::optional<BoundaryChoice> StableChooser::choose(const std::vector<Candidate>
   });
   near_ties_.clear();
   cycles_.clear();
-  cache_.reset(graph, previous);
+  cache_.reset(graph, previous, known);
   for (size_t k = 0; k < order_.size(); ++k) {
     const Candidate& c = candidates[order_[k]];
     if (k > 0) {

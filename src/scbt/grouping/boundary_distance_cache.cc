@@ -13,7 +13,8 @@ constexpr double kNotComputed = std::numeric_limits<double>::quiet_NaN();
 
 }  // namespace
 
-void BoundaryDistanceCache::reset(const SegmentGraph& graph, const Polygon& previous) {
+void BoundaryDistanceCache::reset(const SegmentGraph& graph, const Polygon& previous,
+                                  const KnownSegmentDistances* known) {
   graph_ = &graph;
   previous_ = &previous;
   query_.reset(previous);
@@ -38,6 +39,28 @@ void BoundaryDistanceCache::reset(const SegmentGraph& graph, const Polygon& prev
     sample_y_[2 * i + 1] = midpoint.y;
     previous_edge_length_[i] = cv::norm(previous[i] - previous[j]);
     previous_length_ += previous_edge_length_[i];
+  }
+  if (known && known->segments && known->distances) take_known(*known);
+}
+
+void BoundaryDistanceCache::take_known(const KnownSegmentDistances& known) {
+  const SegmentGraph& g = *graph_;
+  const std::vector<Segment>& segments = *known.segments;
+  const std::vector<double>& distances = *known.distances;
+  if (distances.size() != 3 * segments.size()) return;
+  // The graph's detected edges follow the segments' order, leaving out zero-length ones and
+  // repeats: walk both, and take a segment's distances only where its endpoints are exactly
+  // the edge's (then its midpoint is the edge's too). Any mismatch merely leaves distances to
+  // be computed on demand.
+  size_t next = 0;
+  for (size_t i = 0; i < segments.size() && next < g.detected_edges.size(); ++i) {
+    const int edge = g.detected_edges[next];
+    const GraphEdge& e = g.edges[edge];
+    if (!(g.vertices[e.u] == segments[i].a && g.vertices[e.v] == segments[i].b)) continue;
+    vertex_distance_[e.u] = distances[3 * i];
+    vertex_distance_[e.v] = distances[3 * i + 1];
+    midpoint_distance_[edge] = distances[3 * i + 2];
+    ++next;
   }
 }
 

@@ -10,6 +10,15 @@
 
 namespace scbt {
 
+// Distances to the previous boundary already computed for some segments (the distance filter's,
+// segment_filter.h): distances[3i], [3i + 1] and [3i + 2] are those of segments[i].a, .b and
+// .midpoint(). A distance depends on the point alone, so the cache takes them for the graph's
+// vertices and detected edges at those very points instead of asking again.
+struct KnownSegmentDistances {
+  const std::vector<Segment>* segments = nullptr;
+  const std::vector<double>* distances = nullptr;
+};
+
 // Near-tied candidates of one frame share most of their vertices and edges, so the distances
 // that make up boundary_distance(cycle, previous) are cached per graph vertex and edge and
 // computed at most once per frame:
@@ -21,8 +30,10 @@ namespace scbt {
 // rounding (an edge's distances are computed in the graph's orientation of the edge).
 class BoundaryDistanceCache {
  public:
-  // Starts a frame: forgets everything cached for the previous graph or boundary.
-  void reset(const SegmentGraph& graph, const Polygon& previous);
+  // Starts a frame: forgets everything cached for the previous graph or boundary, then takes
+  // what `known` (optional, distances to this `previous`) gives.
+  void reset(const SegmentGraph& graph, const Polygon& previous,
+             const KnownSegmentDistances* known = nullptr);
 
   // Length-weighted mean distance from the cycle (graph vertex ids, closing back to front) to
   // the previous boundary: the cheap direction, O(cycle length) once cached.
@@ -39,6 +50,7 @@ class BoundaryDistanceCache {
  private:
   // The edge joining u and v, or -1 (cycles handed in need not use graph edges).
   int edge_between(int u, int v) const;
+  void take_known(const KnownSegmentDistances& known);
   double vertex_distance(int v);
   double midpoint_distance(int edge, const Point& a, const Point& b);
   // One edge's share of mean_distance_from_cycle, walked from a to b: its length and its
