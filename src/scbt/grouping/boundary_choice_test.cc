@@ -404,8 +404,15 @@ TEST(BoundaryDistanceCache, KnownSegmentDistancesGiveTheSameBits) {
     plain.reset(graph, previous);
     primed.reset(graph, previous, &known);
     for (size_t k = 0; k < candidates.size(); k += 3) {
-      EXPECT_EQ(primed.boundary_distance(candidates[k].vertices),
-                plain.boundary_distance(candidates[k].vertices));
+      const std::vector<int>& cycle = candidates[k].vertices;
+      EXPECT_EQ(primed.boundary_distance(cycle), plain.boundary_distance(cycle));
+      // The edges the cheap direction finds, handed to the other one, change nothing either.
+      std::vector<int> edges = {-7};
+      EXPECT_EQ(primed.mean_distance_from_cycle(cycle, &edges),
+                plain.mean_distance_from_cycle(cycle));
+      ASSERT_EQ(edges.size(), cycle.size() + 1);
+      EXPECT_EQ(primed.mean_distance_to_cycle(cycle, &edges[1]),
+                plain.mean_distance_to_cycle(cycle));
       ++compared;
     }
   }

@@ -96,11 +96,13 @@ BoundaryDistanceCache::EdgeTerm BoundaryDistanceCache::edge_term(int edge, int f
   return term;
 }
 
-double BoundaryDistanceCache::mean_distance_from_cycle(const std::vector<int>& cycle) {
+double BoundaryDistanceCache::mean_distance_from_cycle(const std::vector<int>& cycle,
+                                                       std::vector<int>* edges) {
   const size_t n = cycle.size();
   double weighted = 0.0, total_length = 0.0;
   for (size_t i = 0, j = n - 1; i < n; j = i++) {
     const int edge = edge_between(cycle[j], cycle[i]);
+    if (edges) edges->push_back(edge);
     EdgeTerm term;
     if (edge >= 0) {
       // Near-tied cycles share most edges: each edge's term is computed once per direction.
@@ -132,7 +134,8 @@ const double* BoundaryDistanceCache::sample_distances_sq(int edge, const Point& 
   return row;
 }
 
-double BoundaryDistanceCache::mean_distance_to_cycle(const std::vector<int>& cycle) {
+double BoundaryDistanceCache::mean_distance_to_cycle(const std::vector<int>& cycle,
+                                                     const int* edges) {
   const size_t m = sample_x_.size();
   const size_t n = cycle.size();
   if (m == 0 || !(previous_length_ > 0.0)) return 0.0;
@@ -145,7 +148,7 @@ double BoundaryDistanceCache::mean_distance_to_cycle(const std::vector<int>& cyc
     }
   }
   for (size_t i = 0, j = n - 1; n > 1 && i < n; j = i++) {
-    const int edge = edge_between(cycle[j], cycle[i]);
+    const int edge = edges ? edges[i] : edge_between(cycle[j], cycle[i]);
     // Rows are cached in the graph's orientation of the edge, so the same edge walked either
     // way gives the same values.
     const bool forward = edge < 0 || graph_->edges[edge].u == cycle[j];

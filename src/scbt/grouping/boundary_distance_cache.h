@@ -36,10 +36,12 @@ class BoundaryDistanceCache {
              const KnownSegmentDistances* known = nullptr);
 
   // Length-weighted mean distance from the cycle (graph vertex ids, closing back to front) to
-  // the previous boundary: the cheap direction, O(cycle length) once cached.
-  double mean_distance_from_cycle(const std::vector<int>& cycle);
-  // Length-weighted mean distance from the previous boundary to the cycle.
-  double mean_distance_to_cycle(const std::vector<int>& cycle);
+  // the previous boundary: the cheap direction, O(cycle length) once cached. When `edges` is
+  // given, the graph edge (or -1) joining each vertex's predecessor to it is appended to it.
+  double mean_distance_from_cycle(const std::vector<int>& cycle, std::vector<int>* edges = nullptr);
+  // Length-weighted mean distance from the previous boundary to the cycle. `edges` (optional):
+  // what mean_distance_from_cycle appended for this cycle, one per vertex.
+  double mean_distance_to_cycle(const std::vector<int>& cycle, const int* edges = nullptr);
   // boundary_distance(candidate polygon, previous): the larger of the two.
   double boundary_distance(const std::vector<int>& cycle) {
     const double from = mean_distance_from_cycle(cycle);
