@@ -21,7 +21,16 @@ void BoundaryQuery::reset(const Polygon& boundary) {
   }
 }
 
-double BoundaryQuery::distance(const Point& p, size_t* hint) const {
+// The box pass is most of a query; on x86-64 it is also compiled for AVX2 (four boxes per
+// instruction instead of two), picked at load time where the CPU has it. AVX2 does not bring
+// fused multiply-add (that is FMA, a separate target), so every value is rounded as before.
+#if defined(__x86_64__) && defined(__has_attribute)
+#if __has_attribute(target_clones)
+__attribute__((target_clones("avx2", "default")))
+#endif
+#endif
+double
+BoundaryQuery::distance(const Point& p, size_t* hint) const {
   const Polygon& boundary = *boundary_;
   const size_t n = boundary.size();
   if (n < 2) return distance_to_boundary(p, boundary);

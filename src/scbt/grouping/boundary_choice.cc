@@ -74,7 +74,8 @@ int StableChooser::closest_near_tie() {
   for (const NearTie& tie : near_ties_) {
     if (tie.from_distance > best_distance) break;
     cycle_.assign(cycles_.begin() + tie.begin, cycles_.begin() + tie.end);
-    const double distance = std::max(tie.from_distance, cache_.mean_distance_to_cycle(cycle_));
+    const double distance = std::max(
+        tie.from_distance, cache_.mean_distance_to_cycle(cycle_, &cycle_edges_[tie.begin]));
     // Equal distances go to the earlier in (area, gap) order, as a scan in that order would.
     if (distance < best_distance ||
         (distance == best_distance && std::isfinite(distance) && tie.rank < best_rank)) {

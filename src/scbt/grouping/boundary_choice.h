@@ -58,13 +58,15 @@ std::optional<BoundaryChoice> choose_boundary_stable(const std::vector<CycleCand
 // of candidates that carry `gap_length` and `area`, whose cycles (graph vertex ids) are listed on
 // demand by `list_vertices(index, std::vector<int>* out)`: only near-tied candidates are ever
 // listed. Chooses exactly as choose_boundary_stable does (distances equal up to rounding).
+// `known` (optional): distances to `previous` already computed for the graph's segments.
 class StableChooser {
  public:
   template <class Candidate, class ListVertices>
   std::optional<BoundaryChoice> choose(const std::vector<Candidate>& candidates,
                                        ListVertices&& list_vertices, const SegmentGraph& graph,
                                        const Polygon& previous, double min_similarity,
-                                       double tolerance);
+                                       double tolerance,
+                                       const KnownSegmentDistances* known = nullptr);
 
  private:
   struct NearTie {
@@ -78,9 +80,15 @@ class StableChooser {
   int closest_near_tie();
 
   std::vector<double> admissible_cost_;
-  std::vector<int> order_;
+  // A near tie's sort key next to its index, so that the sort reads one array.
+  struct Keyed {
+    double area, gap_length;
+    int index;
+  };
+  std::vector<Keyed> order_;
   std::vector<NearTie> near_ties_;
   std::vector<int> cycles_;
+  std::vector<int> cycle_edges_;  // per entry of cycles_, the edge ending there (edge_between)
   std::vector<int> cycle_;
   BoundaryDistanceCache cache_;
 };
@@ -90,7 +98,8 @@ std::optional<BoundaryChoice> StableChooser::choose(const std::vector<Candidate>
                                                     ListVertices&& list_vertices,
                                                     const SegmentGraph& graph,
                                                     const Polygon& previous, double min_similarity,
-                                                    double tolerance) {
+                                                    double tolerance,
+                                                    const KnownSegmentDistances* known) {
   const double previous_area = area(previous);
   BoundaryChoice best;
   // Each candidate's cost, kept for the near-tie pass below (NaN: not admissible, so that no
@@ -116,25 +125,31 @@ std::optional<BoundaryChoice> StableChooser::choose(const std::vector<Candidate>
 
   order_.clear();
   for (int i = 0; i < static_cast<int>(candidates.size()); ++i) {
-    if (admissible_cost_[i] <= bound) order_.push_back(i);
+    if (admissible_cost_[i] <= bound) {
+      order_.push_back({candidates[i].area, candidates[i].gap_length, i});
+    }
   }
   // Different seeds often close the same cycle; identical cycles have bit-identical gap and
-  // area, so each (area, gap) pair is measured once.
-  std::sort(order_.begin(), order_.end(), [&](int l, int r) {
-    const Candidate &a = candidates[l], &b = candidates[r];
+  // area, so each (area, gap) pair is measured once. (The sort sees the same sequence and the
+  // same comparisons as one of indices compared through the candidates, so equal keys end in
+  // the same order.)
+  std::sort(order_.begin(), order_.end(), [](const Keyed& a, const Keyed& b) {
     return a.area < b.area || (a.area == b.area && a.gap_length < b.gap_length);
   });
   near_ties_.clear();
   cycles_.clear();
-  cache_.reset(graph, previous);
+  cache_.reset(graph, previous, known);
+  cycle_edges_.clear();
   for (size_t k = 0; k < order_.size(); ++k) {
-    const Candidate& c = candidates[order_[k]];
+    const Keyed& c = order_[k];
     if (k > 0) {
-      const Candidate& before = candidates[order_[k - 1]];
+      const Keyed& before = order_[k - 1];
       if (before.area == c.area && before.gap_length == c.gap_length) continue;
     }
-    list_vertices(order_[k], &cycle_);
-    NearTie tie{order_[k], static_cast<int>(k), cache_.mean_distance_from_cycle(cycle_),
+    list_vertices(c.index, &cycle_);
+    // The cycle's edges are found once, here, and kept for the other direction.
+    NearTie tie{c.index, static_cast<int>(k),
+                cache_.mean_distance_from_cycle(cycle_, &cycle_edges_),
                 static_cast<int>(cycles_.size()), 0};
     cycles_.insert(cycles_.end(), cycle_.begin(), cycle_.end());
     tie.end = static_cast<int>(cycles_.size());

@@ -375,5 +375,49 @@ TEST(BoundaryDistanceCache, MatchesBoundaryDistanceOnGraphCyclesAndArbitraryOnes
   EXPECT_GT(measured, 100);
 }
 
+// Distances handed in by the filter change nothing, to the last bit, also when some segments
+// are repeated, reversed, of zero length or absent from the list (then the list no longer
+// lines up with the graph's detected edges, and no distance may land on the wrong point).
+TEST(BoundaryDistanceCache, KnownSegmentDistancesGiveTheSameBits) {
+  std::mt19937 rng(321);
+  std::uniform_real_distribution<double> pos(150.0, 250.0), radius(40.0, 90.0), phase(0.0, kPi);
+  std::uniform_int_distribution<int> sides(3, 9);
+  BoundaryDistanceCache plain, primed;
+  int compared = 0;
+  for (int round = 0; round < 40; ++round) {
+    const Polygon outline = regular(sides(rng), Point(pos(rng), pos(rng)), radius(rng), phase(rng));
+    std::vector<Segment> segments = segments_near(outline, rng);
+    segments.insert(segments.begin() + 2, segments[0]);                            // a repeat
+    segments.insert(segments.begin() + 4, Segment{segments[1].b, segments[1].a});  // reversed
+    segments.insert(segments.begin() + 5, Segment{segments[3].a, segments[3].a});  // zero length
+    const SegmentGraph graph = build_segment_graph(segments);
+    const std::vector<CycleCandidate> candidates = search_cycle_candidates(graph);
+    const Polygon previous = regular(sides(rng), Point(pos(rng), pos(rng)), radius(rng));
+    std::vector<Segment> listed(segments.begin() + (round % 3 == 0 ? 1 : 0), segments.end());
+    std::vector<double> distances;
+    for (const Segment& s : listed) {
+      for (const Point& p : {s.a, s.b, s.midpoint()}) {
+        distances.push_back(distance_to_boundary(p, previous));
+      }
+    }
+    const KnownSegmentDistances known{&listed, &distances};
+    plain.reset(graph, previous);
+    primed.reset(graph, previous, &known);
+    for (size_t k = 0; k < candidates.size(); k += 3) {
+      const std::vector<int>& cycle = candidates[k].vertices;
+      EXPECT_EQ(primed.boundary_distance(cycle), plain.boundary_distance(cycle));
+      // The edges the cheap direction finds, handed to the other one, change nothing either.
+      std::vector<int> edges = {-7};
+      EXPECT_EQ(primed.mean_distance_from_cycle(cycle, &edges),
+                plain.mean_distance_from_cycle(cycle));
+      ASSERT_EQ(edges.size(), cycle.size() + 1);
+      EXPECT_EQ(primed.mean_distance_to_cycle(cycle, &edges[1]),
+                plain.mean_distance_to_cycle(cycle));
+      ++compared;
+    }
+  }
+  EXPECT_GT(compared, 100);
+}
+
 }  // namespace
 }  // namespace scbt

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <limits>
 
+#include "scbt/geometry/segment_distance_row.h"
+
 namespace scbt {
 namespace {
 
@@ -11,26 +13,54 @@ constexpr double kNotComputed = std::numeric_limits<double>::quiet_NaN();
 
 }  // namespace
 
-void BoundaryDistanceCache::reset(const SegmentGraph& graph, const Polygon& previous) {
+void BoundaryDistanceCache::reset(const SegmentGraph& graph, const Polygon& previous,
+                                  const KnownSegmentDistances* known) {
   graph_ = &graph;
   previous_ = &previous;
   query_.reset(previous);
   vertex_distance_.assign(graph.vertices.size(), kNotComputed);
   midpoint_distance_.assign(graph.edges.size(), kNotComputed);
+  edge_term_.assign(2 * graph.edges.size(), EdgeTerm{kNotComputed, kNotComputed});
   row_offset_.assign(graph.edges.size(), -1);
   rows_.clear();
 
   // Samples in the order boundary_distance visits them: edge (j, i) for i = 0.. with j = i - 1
   // cyclically contributes its start j, its midpoint and its end i.
   const size_t n = previous.size();
-  samples_.resize(2 * n);
+  sample_x_.resize(2 * n);
+  sample_y_.resize(2 * n);
   previous_edge_length_.resize(n);
   previous_length_ = 0.0;
   for (size_t i = 0, j = n - 1; i < n; j = i++) {
-    samples_[2 * i] = previous[i];
-    samples_[2 * i + 1] = (previous[j] + previous[i]) * 0.5;  // midpoint of the edge into i
+    const Point midpoint = (previous[j] + previous[i]) * 0.5;  // of the edge into i
+    sample_x_[2 * i] = previous[i].x;
+    sample_y_[2 * i] = previous[i].y;
+    sample_x_[2 * i + 1] = midpoint.x;
+    sample_y_[2 * i + 1] = midpoint.y;
     previous_edge_length_[i] = cv::norm(previous[i] - previous[j]);
     previous_length_ += previous_edge_length_[i];
+  }
+  if (known && known->segments && known->distances) take_known(*known);
+}
+
+void BoundaryDistanceCache::take_known(const KnownSegmentDistances& known) {
+  const SegmentGraph& g = *graph_;
+  const std::vector<Segment>& segments = *known.segments;
+  const std::vector<double>& distances = *known.distances;
+  if (distances.size() != 3 * segments.size()) return;
+  // The graph's detected edges follow the segments' order, leaving out zero-length ones and
+  // repeats: walk both, and take a segment's distances only where its endpoints are exactly
+  // the edge's (then its midpoint is the edge's too). Any mismatch merely leaves distances to
+  // be computed on demand.
+  size_t next = 0;
+  for (size_t i = 0; i < segments.size() && next < g.detected_edges.size(); ++i) {
+    const int edge = g.detected_edges[next];
+    const GraphEdge& e = g.edges[edge];
+    if (!(g.vertices[e.u] == segments[i].a && g.vertices[e.v] == segments[i].b)) continue;
+    vertex_distance_[e.u] = distances[3 * i];
+    vertex_distance_[e.v] = distances[3 * i + 1];
+    midpoint_distance_[edge] = distances[3 * i + 2];
+    ++next;
   }
 }
 
@@ -56,23 +86,40 @@ double BoundaryDistanceCache::midpoint_distance(int edge, const Point& a, const 
   return d;
 }
 
-double BoundaryDistanceCache::mean_distance_from_cycle(const std::vector<int>& cycle) {
-  const std::vector<Point>& points = graph_->vertices;
+BoundaryDistanceCache::EdgeTerm BoundaryDistanceCache::edge_term(int edge, int from, int to) {
+  const Point& a = graph_->vertices[from];
+  const Point& b = graph_->vertices[to];
+  EdgeTerm term;
+  term.length = cv::norm(b - a);
+  const double mid = midpoint_distance(edge, a, b);
+  term.weighted = term.length * (vertex_distance(from) + 4.0 * mid + vertex_distance(to)) / 6.0;
+  return term;
+}
+
+double BoundaryDistanceCache::mean_distance_from_cycle(const std::vector<int>& cycle,
+                                                       std::vector<int>* edges) {
   const size_t n = cycle.size();
   double weighted = 0.0, total_length = 0.0;
   for (size_t i = 0, j = n - 1; i < n; j = i++) {
-    const Point& a = points[cycle[j]];
-    const Point& b = points[cycle[i]];
-    const double length = cv::norm(b - a);
-    const double mid = midpoint_distance(edge_between(cycle[j], cycle[i]), a, b);
-    weighted += length * (vertex_distance(cycle[j]) + 4.0 * mid + vertex_distance(cycle[i])) / 6.0;
-    total_length += length;
+    const int edge = edge_between(cycle[j], cycle[i]);
+    if (edges) edges->push_back(edge);
+    EdgeTerm term;
+    if (edge >= 0) {
+      // Near-tied cycles share most edges: each edge's term is computed once per direction.
+      EdgeTerm& cached = edge_term_[2 * edge + (graph_->edges[edge].u == cycle[j] ? 0 : 1)];
+      if (std::isnan(cached.weighted)) cached = edge_term(edge, cycle[j], cycle[i]);
+      term = cached;
+    } else {
+      term = edge_term(edge, cycle[j], cycle[i]);
+    }
+    weighted += term.weighted;
+    total_length += term.length;
   }
   return total_length > 0.0 ? weighted / total_length : 0.0;
 }
 
 const double* BoundaryDistanceCache::sample_distances_sq(int edge, const Point& a, const Point& b) {
-  const size_t m = samples_.size();
+  const size_t m = sample_x_.size();
   double* row;
   if (edge >= 0 && row_offset_[edge] >= 0) return rows_.data() + row_offset_[edge];
   if (edge >= 0) {
@@ -83,24 +130,32 @@ const double* BoundaryDistanceCache::sample_distances_sq(int edge, const Point& 
     scratch_row_.resize(m);
     row = scratch_row_.data();
   }
-  for (size_t s = 0; s < m; ++s) row[s] = distance_sq_to_segment(samples_[s], a, b);
+  distance_sq_row_to_segment(sample_x_.data(), sample_y_.data(), m, a, b, row);
   return row;
 }
 
-double BoundaryDistanceCache::mean_distance_to_cycle(const std::vector<int>& cycle) {
-  const size_t m = samples_.size();
+// Its loop of minima over whole rows is also compiled for AVX2 (four samples per instruction),
+// picked at load time where the CPU has it; a minimum is exact at any width.
+#if defined(__x86_64__) && defined(__has_attribute)
+#if __has_attribute(target_clones)
+__attribute__((target_clones("avx2", "default")))
+#endif
+#endif
+double
+BoundaryDistanceCache::mean_distance_to_cycle(const std::vector<int>& cycle, const int* edges) {
+  const size_t m = sample_x_.size();
   const size_t n = cycle.size();
   if (m == 0 || !(previous_length_ > 0.0)) return 0.0;
   nearest_sq_.assign(m, std::numeric_limits<double>::infinity());
   const std::vector<Point>& points = graph_->vertices;
   if (n == 1) {
     for (size_t s = 0; s < m; ++s) {
-      const Point d = samples_[s] - points[cycle[0]];
+      const Point d = Point(sample_x_[s], sample_y_[s]) - points[cycle[0]];
       nearest_sq_[s] = d.x * d.x + d.y * d.y;
     }
   }
   for (size_t i = 0, j = n - 1; n > 1 && i < n; j = i++) {
-    const int edge = edge_between(cycle[j], cycle[i]);
+    const int edge = edges ? edges[i] : edge_between(cycle[j], cycle[i]);
     // Rows are cached in the graph's orientation of the edge, so the same edge walked either
     // way gives the same values.
     const bool forward = edge < 0 || graph_->edges[edge].u == cycle[j];

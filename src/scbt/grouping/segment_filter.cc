@@ -19,8 +19,10 @@ std::vector<Segment> filter_segments_near_boundary(const std::vector<Segment>& s
 }
 
 void filter_segments_near_boundary(const std::vector<Segment>& segments, const Polygon& boundary,
-                                   double max_mean_distance, std::vector<Segment>* kept) {
+                                   double max_mean_distance, std::vector<Segment>* kept,
+                                   std::vector<double>* kept_distances) {
   kept->clear();
+  if (kept_distances) kept_distances->clear();
   if (boundary.empty()) return;
   const BoundaryQuery edges(boundary);
   // Distances are non-negative, so a sum that already reaches 3x the bound cannot get below it.
@@ -32,7 +34,9 @@ void filter_segments_near_boundary(const std::vector<Segment>& segments, const P
     const double db = edges.distance(segment.b, &hint);
     if (!(da + db < sum_bound)) continue;
     const double dm = edges.distance(segment.midpoint(), &hint);
-    if ((da + db + dm) / 3.0 < max_mean_distance) kept->push_back(segment);
+    if (!((da + db + dm) / 3.0 < max_mean_distance)) continue;
+    kept->push_back(segment);
+    if (kept_distances) kept_distances->insert(kept_distances->end(), {da, db, dm});
   }
 }
 

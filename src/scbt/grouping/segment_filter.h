@@ -14,8 +14,11 @@ double mean_distance_to_boundary(const Segment& segment, const Polygon& boundary
 std::vector<Segment> filter_segments_near_boundary(const std::vector<Segment>& segments,
                                                    const Polygon& boundary,
                                                    double max_mean_distance);
-// The same into *kept (its buffer reused).
+// The same into *kept (its buffer reused). When `kept_distances` is given, it receives the
+// distances to the boundary of each kept segment's a, b and midpoint, three per segment: the
+// boundary choice asks for the same points' distances again (KnownSegmentDistances).
 void filter_segments_near_boundary(const std::vector<Segment>& segments, const Polygon& boundary,
-                                   double max_mean_distance, std::vector<Segment>* kept);
+                                   double max_mean_distance, std::vector<Segment>* kept,
+                                   std::vector<double>* kept_distances = nullptr);
 
 }  // namespace scbt

@@ -93,6 +93,20 @@ TEST_P(SegmentFilterProperty, KeepsExactlyTheSegmentsBelowTheBound) {
   }
   EXPECT_GT(kept.size(), 0u);
   EXPECT_LT(kept.size(), segments.size());
+
+  // With distances: the same segments, and each one's endpoint and midpoint distances exactly
+  // distance_to_boundary's (the boundary choice takes them in place of its own).
+  std::vector<Segment> kept_again = {segments[0]};
+  std::vector<double> distances = {-1.0};
+  filter_segments_near_boundary(segments, boundary, max_mean, &kept_again, &distances);
+  ASSERT_EQ(kept_again.size(), kept.size());
+  ASSERT_EQ(distances.size(), 3 * kept.size());
+  for (size_t i = 0; i < kept.size(); ++i) {
+    EXPECT_EQ(kept_again[i].a, kept[i].a);
+    EXPECT_EQ(distances[3 * i], distance_to_boundary(kept[i].a, boundary));
+    EXPECT_EQ(distances[3 * i + 1], distance_to_boundary(kept[i].b, boundary));
+    EXPECT_EQ(distances[3 * i + 2], distance_to_boundary(kept[i].midpoint(), boundary));
+  }
 }
 
 INSTANTIATE_TEST_SUITE_P(Seeds, SegmentFilterProperty, ::testing::Range(0u, 100u));

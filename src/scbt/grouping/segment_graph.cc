@@ -109,7 +109,7 @@ void build_segment_graph(const std::vector<Segment>& detected, SegmentGraph* gra
   // Sorting flat arrays instead of a std::map of points and a hash set of edges: the same graph,
   // with a few reused buffers instead of a node allocation per endpoint and per edge (the map
   // and set were half of this stage's time).
-  thread_local std::vector<int> order, vertex_of;
+  thread_local std::vector<int> first_of_edge, vertex_of;
   thread_local std::vector<uint64_t> keys;
   thread_local std::vector<std::pair<uint64_t, int>> keyed;
 
@@ -119,11 +119,21 @@ void build_segment_graph(const std::vector<Segment>& detected, SegmentGraph* gra
   auto endpoint = [&](int k) -> const Point& {
     return (k & 1) ? detected[k >> 1].b : detected[k >> 1].a;
   };
-  order.resize(occurrences);
-  for (int k = 0; k < occurrences; ++k) order[k] = k;
-  std::sort(order.begin(), order.end(), [&](int l, int r) {
-    const Point &p = endpoint(l), &q = endpoint(r);
-    return p.x < q.x || (p.x == q.x && (p.y < q.y || (p.y == q.y && l < r)));
+  // Sorted by (x, y, occurrence), a total order, so the result does not depend on the sort.
+  // The coordinates are copied next to their occurrence: the comparisons then read one array
+  // instead of reaching into the segments through the occurrence.
+  struct Occurrence {
+    double x, y;
+    int k;
+  };
+  thread_local std::vector<Occurrence> sorted;
+  sorted.resize(occurrences);
+  for (int k = 0; k < occurrences; ++k) {
+    const Point& p = endpoint(k);
+    sorted[k] = {p.x, p.y, k};
+  }
+  std::sort(sorted.begin(), sorted.end(), [](const Occurrence& l, const Occurrence& r) {
+    return l.x < r.x || (l.x == r.x && (l.y < r.y || (l.y == r.y && l.k < r.k)));
   });
   vertex_of.assign(occurrences, -1);
   // The vertices in lexicographic (x, y) order, the order they are triangulated in.
@@ -133,9 +143,12 @@ void build_segment_graph(const std::vector<Segment>& detected, SegmentGraph* gra
   // member with -2 - representative, then number representatives in occurrence order.
   for (int start = 0; start < occurrences;) {
     int end = start + 1;
-    while (end < occurrences && endpoint(order[end]) == endpoint(order[start])) ++end;
-    for (int k = start + 1; k < end; ++k) vertex_of[order[k]] = -2 - order[start];
-    by_position.push_back(order[start]);  // an occurrence, renumbered below
+    while (end < occurrences && sorted[end].x == sorted[start].x &&
+           sorted[end].y == sorted[start].y) {
+      ++end;
+    }
+    for (int k = start + 1; k < end; ++k) vertex_of[sorted[k].k] = -2 - sorted[start].k;
+    by_position.push_back(sorted[start].k);  // an occurrence, renumbered below
     start = end;
   }
   for (int k = 0; k < occurrences; ++k) {
@@ -156,14 +169,14 @@ void build_segment_graph(const std::vector<Segment>& detected, SegmentGraph* gra
   }
   std::sort(keyed.begin(), keyed.end());
   keys.clear();
-  order.assign(detected.size(), 0);  // reused: 1 marks the first segment of each edge
+  first_of_edge.assign(detected.size(), 0);  // 1 marks the first segment of each edge
   for (size_t k = 0; k < keyed.size(); ++k) {
     if (k > 0 && keyed[k].first == keyed[k - 1].first) continue;
     keys.push_back(keyed[k].first);
-    order[keyed[k].second] = 1;
+    first_of_edge[keyed[k].second] = 1;
   }
   for (int i = 0; i < static_cast<int>(detected.size()); ++i) {
-    if (!order[i]) continue;
+    if (!first_of_edge[i]) continue;
     graph.detected_edges.push_back(graph.num_edges());
     GraphEdge edge;
     edge.u = vertex_of[2 * i];

@@ -127,7 +127,8 @@ void Tracker::attempt(const cv::Mat& frame, const Polygon& prior, Attempt* a) {
     stage_start = now;
     return ms;
   };
-  filter_segments_near_boundary(a->detected, prior, options_.filter_distance, &a->kept);
+  filter_segments_near_boundary(a->detected, prior, options_.filter_distance, &a->kept,
+                                &a->kept_distances);
   if (static_cast<int>(a->kept.size()) > options_.max_segments) {
     a->num_dropped = static_cast<int>(a->kept.size()) - options_.max_segments;
     std::nth_element(a->kept.begin(), a->kept.begin() + options_.max_segments, a->kept.end(),
@@ -143,16 +144,20 @@ void Tracker::attempt(const cv::Mat& frame, const Polygon& prior, Attempt* a) {
     a->search.run(a->graph, options_.bdsp);
   }
   a->stages.search_ms = lap();
+  // The choice asks for the distances of the graph's points to `prior`; the filter computed
+  // them for the kept segments (unless the cap reordered them).
+  KnownSegmentDistances known{&a->kept, &a->kept_distances};
+  const KnownSegmentDistances* known_if_any = a->num_dropped == 0 ? &known : nullptr;
   if (a->generic) {
     a->choice = chooser_.choose(
         a->materialised,
         [&](int index, std::vector<int>* cycle) { *cycle = a->materialised[index].vertices; },
-        a->graph, prior, options_.min_area_similarity, options_.cost_tolerance);
+        a->graph, prior, options_.min_area_similarity, options_.cost_tolerance, known_if_any);
   } else {
     a->choice = chooser_.choose(
         a->search.candidates(),
         [&](int index, std::vector<int>* cycle) { a->search.vertices(index, cycle); }, a->graph,
-        prior, options_.min_area_similarity, options_.cost_tolerance);
+        prior, options_.min_area_similarity, options_.cost_tolerance, known_if_any);
   }
   a->stages.choice_ms = lap();
   a->grouping_ms =

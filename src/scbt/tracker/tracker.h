@@ -87,6 +87,7 @@ class Tracker {
     cv::Rect roi;
     std::vector<Segment> detected;
     std::vector<Segment> kept;
+    std::vector<double> kept_distances;  // the filter's, 3 per kept segment (segment_filter.h)
     int num_dropped = 0;
     SegmentGraph graph;
     CycleSearch search;                        // the candidates (BdspOptions::generic_graph off)
