@@ -15,7 +15,9 @@ struct TranslationEstimate {
 };
 
 // Phase correlation (cv::phaseCorrelate with a Hann window) between two 8-bit grey images of the
-// same size. std::nullopt when the images are too small or differ in size.
+// same size; images larger than 200 px on a side are first averaged down by a power of two (the
+// shift is scaled back: about a pixel of precision). std::nullopt when the images are too small
+// or differ in size.
 std::optional<TranslationEstimate> estimate_translation(const cv::Mat& reference,
                                                         const cv::Mat& current);
 

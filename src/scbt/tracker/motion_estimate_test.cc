@@ -36,6 +36,24 @@ TEST(EstimateTranslation, RecoversIntegerShiftsOfATexture) {
   }
 }
 
+// Windows larger than 200 px are averaged down before the correlation: the shift, scaled back,
+// stays within about a pixel.
+TEST(EstimateTranslation, RecoversShiftsOfLargeWindowsWithinAPixel) {
+  std::mt19937 rng(9);
+  std::uniform_int_distribution<int> shift(-40, 40);
+  for (int trial = 0; trial < 20; ++trial) {
+    const cv::Mat scene = random_texture({700, 560}, 300 + trial);
+    const int dx = shift(rng), dy = shift(rng);
+    const cv::Rect window(150, 120, 383 - trial, 291 + trial);
+    const std::optional<TranslationEstimate> estimate =
+        estimate_translation(scene(window), scene(window - cv::Point(dx, dy)));
+    ASSERT_TRUE(estimate.has_value());
+    EXPECT_NEAR(estimate->shift.x, dx, 1.0) << "trial " << trial;
+    EXPECT_NEAR(estimate->shift.y, dy, 1.0) << "trial " << trial;
+    EXPECT_GT(estimate->response, 0.2);
+  }
+}
+
 TEST(EstimateTranslation, RejectsMismatchedOrTinyImages) {
   const cv::Mat a = random_texture({64, 64}, 1);
   EXPECT_FALSE(estimate_translation(a, a(cv::Rect(0, 0, 32, 64)).clone()).has_value());
