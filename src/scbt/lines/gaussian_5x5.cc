@@ -15,6 +15,18 @@ namespace {
 // test against cv::GaussianBlur pins it.
 constexpr int kOuter = 14, kInner = 62, kCentre = 104;
 
+// The weights as values the compiler cannot see, for the vectorised passes: it would otherwise
+// turn each product by a constant into shifts and adds (11 instructions for the three weights),
+// where one 16-bit multiply each is cheaper (whole 360x300 blur: 38.4 -> 31.0 us).
+struct Weights {
+  int outer = kOuter, inner = kInner, centre = kCentre;
+  Weights() {
+#if defined(__GNUC__)
+    asm("" : "+r"(outer), "+r"(inner), "+r"(centre));
+#endif
+  }
+};
+
 // BORDER_REFLECT_101: ... 2 1 | 0 1 2 ... n-1 | n-2 ...
 int reflect_101(int i, int n) {
   if (i >= 0 && i < n) return i;
@@ -27,9 +39,11 @@ int reflect_101(int i, int n) {
 // kept exact: at most 255 * 256, so 16 bits suffice.
 SCBT_PIXEL_LOOP void horizontal_interior(const std::uint8_t* __restrict x,
                                          std::uint16_t* __restrict h, int from, int to) {
+  const Weights weights;
+  const int outer = weights.outer, inner = weights.inner, centre = weights.centre;
   for_each_pixel(from, to, [=](int c) {
-    h[c] = static_cast<std::uint16_t>(kOuter * (x[c - 2] + x[c + 2]) +
-                                      kInner * (x[c - 1] + x[c + 1]) + kCentre * x[c]);
+    h[c] = static_cast<std::uint16_t>(outer * (x[c - 2] + x[c + 2]) +
+                                      inner * (x[c - 1] + x[c + 1]) + centre * x[c]);
   });
 }
 
@@ -60,13 +74,15 @@ SCBT_PIXEL_LOOP void vertical_pass(const std::uint16_t* __restrict a,
                                    const std::uint16_t* __restrict d,
                                    const std::uint16_t* __restrict e, std::uint8_t* __restrict out,
                                    int w) {
+  const Weights weights;
+  const int outer = weights.outer, inner = weights.inner, centre = weights.centre;
   for_each_pixel(0, w, [=](int i) {
     const std::uint16_t high =
-        static_cast<std::uint16_t>(kOuter * ((a[i] >> 8) + (e[i] >> 8)) +
-                                   kInner * ((b[i] >> 8) + (d[i] >> 8)) + kCentre * (c[i] >> 8));
-    const std::uint16_t low = static_cast<std::uint16_t>(kOuter * ((a[i] & 0xFF) + (e[i] & 0xFF)) +
-                                                         kInner * ((b[i] & 0xFF) + (d[i] & 0xFF)) +
-                                                         kCentre * (c[i] & 0xFF));
+        static_cast<std::uint16_t>(outer * ((a[i] >> 8) + (e[i] >> 8)) +
+                                   inner * ((b[i] >> 8) + (d[i] >> 8)) + centre * (c[i] >> 8));
+    const std::uint16_t low = static_cast<std::uint16_t>(outer * ((a[i] & 0xFF) + (e[i] & 0xFF)) +
+                                                         inner * ((b[i] & 0xFF) + (d[i] & 0xFF)) +
+                                                         centre * (c[i] & 0xFF));
     const std::uint16_t rounded = static_cast<std::uint16_t>(high + (low >> 8) + 128);
     out[i] = static_cast<std::uint8_t>(rounded >> 8);
   });
