@@ -21,19 +21,23 @@ void BoundaryQuery::reset(const Polygon& boundary) {
   }
 }
 
+namespace {
+
 // The box pass is most of a query; on x86-64 it is also compiled for AVX2 (four boxes per
 // instruction instead of two), picked at load time where the CPU has it. AVX2 does not bring
-// fused multiply-add (that is FMA, a separate target), so every value is rounded as before.
+// fused multiply-add (that is FMA, a separate target), so every value is rounded as before. A
+// free function, defined before its first use (Clang will not make a function declared and used
+// earlier, such as a member called from the header, multiversioned).
 #if defined(__x86_64__) && defined(__has_attribute)
 #if __has_attribute(target_clones)
 __attribute__((target_clones("avx2", "default")))
 #endif
 #endif
 double
-BoundaryQuery::distance(const Point& p, size_t* hint) const {
-  const Polygon& boundary = *boundary_;
+nearest_edge_distance(const Polygon& boundary, const double* all_min_x, const double* all_max_x,
+                      const double* all_min_y, const double* all_max_y, const Point& p,
+                      size_t* hint) {
   const size_t n = boundary.size();
-  if (n < 2) return distance_to_boundary(p, boundary);
   auto edge_distance_sq = [&](size_t i) {
     return distance_sq_to_segment(p, boundary[i == 0 ? n - 1 : i - 1], boundary[i]);
   };
@@ -46,8 +50,8 @@ BoundaryQuery::distance(const Point& p, size_t* hint) const {
   double box_distance_sq[kBlock];
   for (size_t first = 0; first < n; first += kBlock) {
     const size_t count = std::min(kBlock, n - first);
-    const double *min_x = &min_x_[first], *max_x = &max_x_[first];
-    const double *min_y = &min_y_[first], *max_y = &max_y_[first];
+    const double *min_x = all_min_x + first, *max_x = all_max_x + first;
+    const double *min_y = all_min_y + first, *max_y = all_max_y + first;
     for (size_t k = 0; k < count; ++k) {
       const double dx = std::max(std::max(min_x[k] - p.x, 0.0), p.x - max_x[k]);
       const double dy = std::max(std::max(min_y[k] - p.y, 0.0), p.y - max_y[k]);
@@ -64,6 +68,15 @@ BoundaryQuery::distance(const Point& p, size_t* hint) const {
   }
   *hint = nearest;
   return std::sqrt(best);
+}
+
+}  // namespace
+
+double BoundaryQuery::distance(const Point& p, size_t* hint) const {
+  const Polygon& boundary = *boundary_;
+  if (boundary.size() < 2) return distance_to_boundary(p, boundary);
+  return nearest_edge_distance(boundary, min_x_.data(), max_x_.data(), min_y_.data(), max_y_.data(),
+                               p, hint);
 }
 
 }  // namespace scbt

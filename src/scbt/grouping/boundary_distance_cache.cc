@@ -134,15 +134,25 @@ const double* BoundaryDistanceCache::sample_distances_sq(int edge, const Point& 
   return row;
 }
 
-// Its loop of minima over whole rows is also compiled for AVX2 (four samples per instruction),
-// picked at load time where the CPU has it; a minimum is exact at any width.
+namespace {
+
+// nearest[s] = min(nearest[s], row[s]) for s < m. Also compiled for AVX2 (four samples per
+// instruction), picked at load time where the CPU has it; a minimum is exact at any width. A
+// free function, defined before its first use (Clang will not make a function declared and used
+// earlier, such as a member called from the header, multiversioned).
 #if defined(__x86_64__) && defined(__has_attribute)
 #if __has_attribute(target_clones)
 __attribute__((target_clones("avx2", "default")))
 #endif
 #endif
-double
-BoundaryDistanceCache::mean_distance_to_cycle(const std::vector<int>& cycle, const int* edges) {
+void take_minima(double* __restrict nearest, const double* __restrict row, size_t m) {
+  for (size_t s = 0; s < m; ++s) nearest[s] = std::min(nearest[s], row[s]);
+}
+
+}  // namespace
+
+double BoundaryDistanceCache::mean_distance_to_cycle(const std::vector<int>& cycle,
+                                                     const int* edges) {
   const size_t m = sample_x_.size();
   const size_t n = cycle.size();
   if (m == 0 || !(previous_length_ > 0.0)) return 0.0;
@@ -163,7 +173,7 @@ BoundaryDistanceCache::mean_distance_to_cycle(const std::vector<int>& cycle, con
     const Point& b = points[forward ? cycle[i] : cycle[j]];
     const double* row = sample_distances_sq(edge, a, b);
     // sample_distances_sq may grow rows_; `row` stays valid until the next call.
-    for (size_t s = 0; s < m; ++s) nearest_sq_[s] = std::min(nearest_sq_[s], row[s]);
+    take_minima(nearest_sq_.data(), row, m);
   }
   const size_t count = m / 2;
   double weighted = 0.0;
