@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "scbt/geometry/avx2_clones.h"
+
 namespace scbt {
 
 void BoundaryQuery::reset(const Polygon& boundary) {
@@ -23,20 +25,11 @@ void BoundaryQuery::reset(const Polygon& boundary) {
 
 namespace {
 
-// The box pass is most of a query; on x86-64 it is also compiled for AVX2 (four boxes per
-// instruction instead of two), picked at load time where the CPU has it. AVX2 does not bring
-// fused multiply-add (that is FMA, a separate target), so every value is rounded as before. A
-// free function, defined before its first use (Clang will not make a function declared and used
-// earlier, such as a member called from the header, multiversioned).
-#if defined(__x86_64__) && defined(__has_attribute)
-#if __has_attribute(target_clones)
-__attribute__((target_clones("avx2", "default")))
-#endif
-#endif
-double
-nearest_edge_distance(const Polygon& boundary, const double* all_min_x, const double* all_max_x,
-                      const double* all_min_y, const double* all_max_y, const Point& p,
-                      size_t* hint) {
+// The box pass is most of a query; with AVX2 four boxes per instruction instead of two.
+SCBT_AVX2_CLONES double nearest_edge_distance(const Polygon& boundary, const double* all_min_x,
+                                              const double* all_max_x, const double* all_min_y,
+                                              const double* all_max_y, const Point& p,
+                                              size_t* hint) {
   const size_t n = boundary.size();
   auto edge_distance_sq = [&](size_t i) {
     return distance_sq_to_segment(p, boundary[i == 0 ? n - 1 : i - 1], boundary[i]);

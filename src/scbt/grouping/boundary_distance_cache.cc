@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 
+#include "scbt/geometry/avx2_clones.h"
 #include "scbt/geometry/segment_distance_row.h"
 
 namespace scbt {
@@ -136,16 +137,10 @@ const double* BoundaryDistanceCache::sample_distances_sq(int edge, const Point& 
 
 namespace {
 
-// nearest[s] = min(nearest[s], row[s]) for s < m. Also compiled for AVX2 (four samples per
-// instruction), picked at load time where the CPU has it; a minimum is exact at any width. A
-// free function, defined before its first use (Clang will not make a function declared and used
-// earlier, such as a member called from the header, multiversioned).
-#if defined(__x86_64__) && defined(__has_attribute)
-#if __has_attribute(target_clones)
-__attribute__((target_clones("avx2", "default")))
-#endif
-#endif
-void take_minima(double* __restrict nearest, const double* __restrict row, size_t m) {
+// nearest[s] = min(nearest[s], row[s]) for s < m; with AVX2 four samples per instruction (a
+// minimum is exact at any width).
+SCBT_AVX2_CLONES void take_minima(double* __restrict nearest, const double* __restrict row,
+                                  size_t m) {
   for (size_t s = 0; s < m; ++s) nearest[s] = std::min(nearest[s], row[s]);
 }
 
