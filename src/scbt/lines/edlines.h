@@ -17,8 +17,9 @@
 //      lines tested are those in it; OpenCV's EdgeDrawing run on the window does the same).
 // Flat member buffers are reused from call to call; no allocation in steady state beyond the
 // output vector's growth. The input may be a window of a larger image (the automatic minimum
-// line length then uses the larger image's size) and may be restricted to a band (a mask) where
-// edges may start and run, which is how the tracker looks only near its previous boundary.
+// line length then uses the larger image's size) and may be restricted to a band (a mask, or
+// spans per row) where edges may start and run, which is how the tracker looks only near its
+// previous boundary; with a band, steps 1 and 2 run only in the blocks of columns near it.
 #pragma once
 
 #include <cstdint>
