@@ -253,23 +253,23 @@ void EdLines::smooth_and_gradient(const cv::Mat& gray, const cv::Mat& band_mask,
     if (near_band == nullptr) {
       sobel_row(above, row, below, g, d, w, threshold16);
       if (!band_mask.empty()) mask_row(d, band_mask.ptr<std::uint8_t>(r), w);
-    }
-    for (const ColumnSpan* s = near_band != nullptr ? blocks_.begin(r) : nullptr;
-         s != nullptr && s != blocks_.end(r); ++s) {
-      const int from = std::max(s->begin, 1), to = std::min(s->end, w - 1);
-      if (from >= to) continue;
-      // sobel_row computes columns 1 .. width - 2 of the row it is given.
-      const int shift = from - 1;
-      sobel_row(above + shift, row + shift, below + shift, g + shift, d + shift, to - from + 2,
-                threshold16);
-      int c = from;  // the first column not yet known to be in the band or cleared
-      for (const ColumnSpan* b = near_band->begin(r); b != near_band->end(r) && c < to; ++b) {
-        if (b->end <= c) continue;
-        if (b->begin >= to) break;
-        if (b->begin > c) std::memset(d + c, 0, static_cast<size_t>(b->begin - c));
-        c = b->end;
+    } else {
+      for (const ColumnSpan* s = blocks_.begin(r); s != blocks_.end(r); ++s) {
+        const int from = std::max(s->begin, 1), to = std::min(s->end, w - 1);
+        if (from >= to) continue;
+        // sobel_row computes columns 1 .. width - 2 of the row it is given.
+        const int shift = from - 1;
+        sobel_row(above + shift, row + shift, below + shift, g + shift, d + shift, to - from + 2,
+                  threshold16);
+        int c = from;  // the first column not yet known to be in the band or cleared
+        for (const ColumnSpan* b = near_band->begin(r); b != near_band->end(r) && c < to; ++b) {
+          if (b->end <= c) continue;
+          if (b->begin >= to) break;
+          if (b->begin > c) std::memset(d + c, 0, static_cast<size_t>(b->begin - c));
+          c = b->end;
+        }
+        if (c < to) std::memset(d + c, 0, static_cast<size_t>(to - c));
       }
-      if (c < to) std::memset(d + c, 0, static_cast<size_t>(to - c));
     }
     g[0] = g[w - 1] = border;
     d[0] = d[w - 1] = 0;
