@@ -5,6 +5,8 @@
 #include <opencv2/core/mat.hpp>
 #include <stdexcept>
 
+#include "scbt/lines/pixel_loop.h"
+
 namespace scbt {
 
 void RowSpans::reset(cv::Size size) {
@@ -89,8 +91,9 @@ void RowSpans::assign_from_mask(const cv::Mat& mask) {
 
 void cover_with_blocks(const RowSpans& spans, int grow_columns, int grow_rows, RowSpans* out) {
   constexpr int kBlock = kCoverBlock;
-  // Spans of whole 32-column chunks where the window allows (for_each_pixel in pixel_loop.h).
-  constexpr int kMinBlocks = 32 / kBlock;
+  // Spans of whole chunks of the row loops where the window allows (for_each_pixel).
+  constexpr int kMinBlocks = kPixelChunk / kBlock;
+  static_assert(kPixelChunk % kBlock == 0, "a chunk is whole blocks");
   const cv::Size size = spans.size();
   out->reset(size);
   if (size.width == 0 || size.height == 0) return;
@@ -99,10 +102,10 @@ void cover_with_blocks(const RowSpans& spans, int grow_columns, int grow_rows, R
   const int num_blocks = (size.width + kBlock - 1) / kBlock;
   const int words = (num_blocks + 63) / 64;
   // Per row, a bit per block: first the blocks each row's own spans reach (grown sideways), then
-  // OR-ed over the rows within grow_rows above and below.
+  // OR-ed over the rows within grow_rows above and below, one row at a time.
   thread_local std::vector<std::uint64_t> own, grown;
   own.assign(static_cast<size_t>(size.height) * words, 0);
-  grown.assign(own.size(), 0);
+  grown.resize(words);
   for (int r = 0; r < size.height; ++r) {
     std::uint64_t* bits = own.data() + static_cast<size_t>(r) * words;
     for (const ColumnSpan* s = spans.begin(r); s != spans.end(r); ++s) {
@@ -116,7 +119,8 @@ void cover_with_blocks(const RowSpans& spans, int grow_columns, int grow_rows, R
     }
   }
   for (int r = 0; r < size.height; ++r) {
-    std::uint64_t* bits = grown.data() + static_cast<size_t>(r) * words;
+    std::uint64_t* bits = grown.data();
+    std::fill(grown.begin(), grown.end(), 0);
     const int from = std::max(r - grow_rows, 0), to = std::min(r + grow_rows, size.height - 1);
     if (words == 1) {  // windows up to 1024 columns: no loop over words
       std::uint64_t any = 0;

@@ -57,9 +57,9 @@ class RowSpans {
 
 // The blocks of kCoverBlock columns (k kCoverBlock .. (k + 1) kCoverBlock - 1, clipped to the
 // window) that hold a pixel at most grow_columns columns and grow_rows rows from one of `spans`
-// (the set grown by a rectangle), as spans of `out` (same
-// window), each at least 32 columns long where the window allows: the detector's vectorised row
-// loops then run whole 32-column chunks (for_each_pixel in pixel_loop.h).
+// (the set grown by a rectangle), as spans of `out` (same window), each at least kPixelChunk
+// columns long where the window allows: the detector's vectorised row loops then run whole
+// chunks (for_each_pixel in pixel_loop.h).
 constexpr int kCoverBlock = 8;
 void cover_with_blocks(const RowSpans& spans, int grow_columns, int grow_rows, RowSpans* out);
 
