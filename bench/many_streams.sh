@@ -18,6 +18,10 @@ max_frames=${5:-0}
 rounds=${6:-5}
 frames="$dataset/OriginalVideosAVI/$sequence"
 init="$dataset/GroundTruthByPolygons/${sequence}_TrackingGroundTruth.txt"
+[[ -x "$scbt" ]] || { echo "many_streams.sh: $scbt is not an executable" >&2; exit 2; }
+[[ "$n" =~ ^[1-9][0-9]*$ && "$n" -le "$(nproc)" ]] ||
+  { echo "many_streams.sh: N must be 1..$(nproc) (one stream per core), got $n" >&2; exit 2; }
+[[ "$rounds" =~ ^[1-9][0-9]*$ ]] || { echo "many_streams.sh: ROUNDS must be >= 1, got $rounds" >&2; exit 2; }
 [[ -d "$frames" ]] || { echo "many_streams.sh: no frames folder $frames" >&2; exit 2; }
 [[ -f "$init" ]] || { echo "many_streams.sh: no ground truth $init" >&2; exit 2; }
 work=$(mktemp -d)
