@@ -46,8 +46,9 @@ struct LineDetectorOptions {
   // Tracking detects only inside the previous boundary's bounding box grown by the filter
   // distance plus `roi_padding` pixels, instead of on the whole frame (EDLines' 5x5 Gaussian and
   // 3x3 Sobel need 3 px; 8 px measured at least as accurate as the whole frame on all six
-  // dataset sequences, while success rates move by up to +-0.02 with the padding, since segments
-  // cut by the window edge differ). false: the whole frame (the straightforward pipeline).
+  // dataset sequences, while single sequences' success rates move by up to 0.04 with a pixel
+  // more or less padding, since segments cut by the band's edge differ; README, "Speed").
+  // false: the whole frame (the straightforward pipeline).
   bool crop_to_boundary = true;
   double roi_padding = 8.0;
 
