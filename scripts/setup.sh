@@ -6,7 +6,7 @@ set -euo pipefail
 packages=(
   cmake g++ make pkg-config
   libopencv-dev libopencv-contrib-dev
-  libboost-graph-dev libcgal-dev
+  libboost-graph-dev libcgal-dev libeigen3-dev
   libcli11-dev nlohmann-json3-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   clang-format
