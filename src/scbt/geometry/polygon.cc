@@ -90,18 +90,42 @@ int count_distinct_points(const Polygon& polygon) {
 bool is_simple(const Polygon& polygon) {
   const size_t n = polygon.size();
   if (n < 3) return false;
+  // Edge e_i runs from vertex i to vertex i + 1. Edges are swept by their left end; only edges
+  // whose x ranges overlap can meet, so a typical boundary costs O(n log n) instead of the n^2 / 2
+  // pairs (a zigzag whose edges all span the same x range still costs n^2 / 2: see
+  // kMaxBoundaryVertices).
+  struct Extent {
+    double min_x, max_x, min_y, max_y;
+  };
+  std::vector<Extent> extents(n);
+  std::vector<size_t> order(n);
   for (size_t i = 0; i < n; ++i) {
-    const Point& a1 = polygon[i];
-    const Point& a2 = polygon[(i + 1) % n];
-    for (size_t j = i + 1; j < n; ++j) {
-      const Point& b1 = polygon[j];
-      const Point& b2 = polygon[(j + 1) % n];
-      const bool adjacent = j == i + 1 || (i == 0 && j == n - 1);
-      if (adjacent) {
+    const Point& a = polygon[i];
+    const Point& b = polygon[(i + 1) % n];
+    extents[i] = {std::min(a.x, b.x), std::max(a.x, b.x), std::min(a.y, b.y), std::max(a.y, b.y)};
+    order[i] = i;
+  }
+  std::sort(order.begin(), order.end(),
+            [&](size_t l, size_t r) { return extents[l].min_x < extents[r].min_x; });
+  std::vector<size_t> active;
+  for (const size_t j : order) {
+    const Extent& ej = extents[j];
+    size_t kept = 0;
+    for (const size_t i : active) {
+      if (extents[i].max_x < ej.min_x) continue;  // ended left of the sweep: drop it
+      active[kept++] = i;
+      if (extents[i].max_y < ej.min_y || ej.max_y < extents[i].min_y) continue;
+      const size_t lo = std::min(i, j), hi = std::max(i, j);
+      const Point& a1 = polygon[lo];
+      const Point& a2 = polygon[(lo + 1) % n];
+      const Point& b1 = polygon[hi];
+      const Point& b2 = polygon[(hi + 1) % n];
+      const bool follows = hi == lo + 1;
+      if (follows || (lo == 0 && hi == n - 1)) {
         // Adjacent edges share one vertex; they must not fold back onto each other.
-        const Point& shared = (j == i + 1) ? a2 : a1;
-        const Point& other_a = (j == i + 1) ? a1 : a2;
-        const Point& other_b = (j == i + 1) ? b2 : b1;
+        const Point& shared = follows ? a2 : a1;
+        const Point& other_a = follows ? a1 : a2;
+        const Point& other_b = follows ? b2 : b1;
         if (orientation(other_a, shared, other_b) == 0 &&
             (other_a - shared).dot(other_b - shared) > 0) {
           return false;
@@ -110,6 +134,8 @@ bool is_simple(const Polygon& polygon) {
       }
       if (segments_intersect(a1, a2, b1, b2)) return false;
     }
+    active.resize(kept);
+    active.push_back(j);
   }
   return true;
 }

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
@@ -15,12 +16,18 @@ namespace {
 constexpr size_t kMaxLineLength = 1 << 20;
 constexpr long kMaxVertices = 100000;
 
+// Parses a whole token as a number. A value too small for a double (1e-310) becomes the nearest
+// one (denormal or 0); one too large (1e400) is not finite and refused by the callers.
 bool parse_double(const std::string& token, double* value) {
   if (token.empty()) return false;
   errno = 0;
   char* end = nullptr;
   *value = std::strtod(token.c_str(), &end);
-  return end == token.c_str() + token.size() && errno != ERANGE;
+  return end == token.c_str() + token.size();
+}
+
+bool starts_with_byte_order_mark(const std::string& text) {
+  return text.size() >= 3 && text.compare(0, 3, "\xEF\xBB\xBF") == 0;
 }
 
 std::vector<std::string> split_whitespace(const std::string& line) {
@@ -39,6 +46,10 @@ bool try_parse_polygon_line(const std::string& line, Polygon* polygon, std::stri
     return false;
   };
   if (line.size() > kMaxLineLength) return fail("line longer than 1 MiB");
+  if (starts_with_byte_order_mark(line)) {
+    return fail(
+        "line starts with a UTF-8 byte-order mark (bytes EF BB BF); save the file without it");
+  }
   const std::vector<std::string> tokens = split_whitespace(line);
   if (tokens.empty()) return fail("empty line");
   char* end = nullptr;
@@ -64,7 +75,8 @@ bool try_parse_polygon_line(const std::string& line, Polygon* polygon, std::stri
     if (!parse_double(tx, &x)) return fail("coordinate '" + tx + "' is not a number");
     if (!parse_double(ty, &y)) return fail("coordinate '" + ty + "' is not a number");
     if (!std::isfinite(x) || !std::isfinite(y)) {
-      return fail("coordinate of vertex " + std::to_string(i + 1) + " is not finite");
+      return fail("coordinate of vertex " + std::to_string(i + 1) + " ('" +
+                  (std::isfinite(x) ? ty : tx) + "') is not finite");
     }
     result.emplace_back(x, y);
   }
@@ -128,11 +140,30 @@ std::vector<std::string> read_text_lines(const std::string& path) {
 }
 
 Polygon read_first_polygon(const std::string& path) {
-  const std::vector<std::string> lines = read_text_lines(path);
-  if (lines.empty()) throw std::runtime_error(path + ": file is empty");
+  std::ifstream file(path, std::ios::binary);
+  if (!file) throw std::runtime_error(path + ": cannot open for reading");
+  // Read up to the first newline only, never more than the line limit: the file may be huge,
+  // endless (/dev/zero) or a pipe.
+  std::string line;
+  char chunk[4096];
+  bool found_newline = false;
+  while (!found_newline && line.size() <= kMaxLineLength) {
+    file.read(chunk, sizeof(chunk));
+    const std::streamsize got = file.gcount();
+    if (got <= 0) break;
+    const char* newline = static_cast<const char*>(std::memchr(chunk, '\n', got));
+    found_newline = newline != nullptr;
+    line.append(chunk, found_newline ? newline - chunk : got);
+  }
+  if (file.bad()) throw std::runtime_error(path + ": read error");
+  if (line.size() > kMaxLineLength) {
+    throw std::runtime_error(path + ":1: line longer than 1 MiB (the limit of the polygon format)");
+  }
+  if (line.empty() && !found_newline) throw std::runtime_error(path + ": file is empty");
+  if (!line.empty() && line.back() == '\r') line.pop_back();
   Polygon polygon;
   std::string error;
-  if (!try_parse_polygon_line(lines[0], &polygon, &error)) {
+  if (!try_parse_polygon_line(line, &polygon, &error)) {
     throw std::runtime_error(path + ":1: " + error);
   }
   return polygon;
@@ -143,6 +174,11 @@ void check_boundary_polygon(const Polygon& polygon) {
     if (!std::isfinite(polygon[i].x) || !std::isfinite(polygon[i].y)) {
       throw std::invalid_argument("polygon vertex " + std::to_string(i + 1) + " is not finite");
     }
+  }
+  if (polygon.size() > static_cast<size_t>(kMaxBoundaryVertices)) {
+    throw std::invalid_argument("polygon has " + std::to_string(polygon.size()) +
+                                " vertices; a boundary may have at most " +
+                                std::to_string(kMaxBoundaryVertices));
   }
   if (count_distinct_points(polygon) < 3) {
     throw std::invalid_argument("polygon needs at least 3 distinct vertices");

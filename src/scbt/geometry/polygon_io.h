@@ -25,11 +25,19 @@ Polygon parse_points_list(const std::string& text);
 // All lines of a text file, CR stripped. Throws std::runtime_error naming the file if unreadable.
 std::vector<std::string> read_text_lines(const std::string& path);
 
-// The first line of a polygon file, parsed. Errors name the file and line.
+// The first line of a polygon file, parsed; the file is read only up to its first newline, and
+// at most 1 MiB of it (the longest line the format allows). Errors name the file and line.
 Polygon read_first_polygon(const std::string& path);
 
+// The most vertices a boundary may have. Its validation (is_simple) sweeps the edges, O(n log n)
+// for typical outlines, but n^2 / 2 edge pairs for a zigzag whose edges all overlap in x: at this
+// limit that worst case takes 0.25 s of CPU, a circle 5 ms (build/bench/scbt_polygon_check_bench,
+// BM_CheckComb/20000 and BM_CheckCircle/20000; all pairs took 12 s for 60,000 vertices).
+constexpr int kMaxBoundaryVertices = 20000;
+
 // Throws std::invalid_argument unless the polygon can serve as a boundary: finite coordinates,
-// at least 3 distinct vertices, non-zero area, no self-intersection.
+// at most kMaxBoundaryVertices, at least 3 distinct vertices, non-zero area, no
+// self-intersection.
 void check_boundary_polygon(const Polygon& polygon);
 
 }  // namespace scbt

@@ -145,6 +145,45 @@ TEST_F(TempDir, ReadFirstPolygonErrorsNameTheFile) {
   expect_throw_containing<std::runtime_error>([&] { read_first_polygon(bad); }, bad + ":1:");
 }
 
+TEST_F(TempDir, ReadFirstPolygonReadsOnlyTheFirstLine) {
+  // An endless file fails at the line limit instead of filling memory.
+  expect_throw_containing<std::runtime_error>([] { read_first_polygon("/dev/zero"); },
+                                              "/dev/zero:1: line longer than 1 MiB");
+  // A huge file whose first line is fine is not read to its end.
+  const std::string big = write("big.txt", "3 1 1 10 1 5 8\n" + std::string(8 << 20, 'x'));
+  EXPECT_EQ(read_first_polygon(big).size(), 3u);
+  const std::string unterminated = write("last.txt", "3 1 1 10 1 5 8");
+  EXPECT_EQ(read_first_polygon(unterminated).size(), 3u);
+}
+
+TEST_F(TempDir, AByteOrderMarkIsNamed) {
+  const std::string path = write("bom.txt",
+                                 "\xEF\xBB\xBF"
+                                 "3 1 1 10 1 5 8\n");
+  expect_throw_containing<std::runtime_error>(
+      [&] { read_first_polygon(path); }, path + ":1: line starts with a UTF-8 byte-order mark");
+}
+
+TEST(PolygonIo, TinyNumbersAreNumbers) {
+  const Polygon p = parse_polygon_line("3 1e-310 1 10 1 5 8");
+  EXPECT_EQ(p[0].x, 1e-310);
+  EXPECT_EQ(parse_points_list("1e-320,0 1,1")[0].x, 1e-320);
+  expect_throw_containing<std::invalid_argument>([] { parse_polygon_line("3 1e400 1 10 1 5 8"); },
+                                                 "('1e400') is not finite");
+}
+
+TEST(CheckBoundaryPolygon, RefusesMoreVerticesThanTheLimit) {
+  Polygon circle;
+  for (int i = 0; i <= kMaxBoundaryVertices; ++i) {
+    const double angle = 2.0 * M_PI * i / (kMaxBoundaryVertices + 1);
+    circle.emplace_back(1e4 * std::cos(angle), 1e4 * std::sin(angle));
+  }
+  expect_throw_containing<std::invalid_argument>([&] { check_boundary_polygon(circle); },
+                                                 "at most " + std::to_string(kMaxBoundaryVertices));
+  circle.pop_back();
+  EXPECT_NO_THROW(check_boundary_polygon(circle));
+}
+
 TEST(CheckBoundaryPolygon, AcceptsASimplePolygon) {
   EXPECT_NO_THROW(check_boundary_polygon({{0, 0}, {10, 0}, {10, 10}, {0, 10}}));
   EXPECT_NO_THROW(check_boundary_polygon({{0, 0}, {0, 10}, {10, 10}, {10, 0}}));  // either turn

@@ -230,6 +230,65 @@ TEST(Polygon, BowTieIsNotSimple) {
   EXPECT_FALSE(is_simple({{0, 0}, {10, 0}, {5, 5}, {10, 10}, {0, 10}, {5, 5}}));
 }
 
+// The sweep in is_simple against every pair of edges, on random polygons that are often not
+// simple (random vertices, some on a coarse grid so that edges touch and overlap).
+bool is_simple_by_all_pairs(const Polygon& polygon) {
+  const size_t n = polygon.size();
+  if (n < 3) return false;
+  auto orientation = [](const Point& p, const Point& q, const Point& r) {
+    const double cross = (q - p).cross(r - p);
+    return cross > 0 ? 1 : (cross < 0 ? -1 : 0);
+  };
+  auto on_segment = [](const Point& p, const Point& a, const Point& b) {
+    return std::min(a.x, b.x) <= p.x && p.x <= std::max(a.x, b.x) && std::min(a.y, b.y) <= p.y &&
+           p.y <= std::max(a.y, b.y);
+  };
+  for (size_t i = 0; i < n; ++i) {
+    for (size_t j = i + 1; j < n; ++j) {
+      const Point &a1 = polygon[i], &a2 = polygon[(i + 1) % n];
+      const Point &b1 = polygon[j], &b2 = polygon[(j + 1) % n];
+      if (j == i + 1 || (i == 0 && j == n - 1)) {
+        const Point& shared = j == i + 1 ? a2 : a1;
+        const Point& other_a = j == i + 1 ? a1 : a2;
+        const Point& other_b = j == i + 1 ? b2 : b1;
+        if (orientation(other_a, shared, other_b) == 0 &&
+            (other_a - shared).dot(other_b - shared) > 0) {
+          return false;
+        }
+        continue;
+      }
+      const int o1 = orientation(a1, a2, b1), o2 = orientation(a1, a2, b2);
+      const int o3 = orientation(b1, b2, a1), o4 = orientation(b1, b2, a2);
+      if ((o1 != o2 && o3 != o4) || (o1 == 0 && on_segment(b1, a1, a2)) ||
+          (o2 == 0 && on_segment(b2, a1, a2)) || (o3 == 0 && on_segment(a1, b1, b2)) ||
+          (o4 == 0 && on_segment(a2, b1, b2))) {
+        return false;
+      }
+    }
+  }
+  return true;
+}
+
+TEST(Polygon, IsSimpleSweepAgreesWithAllPairs) {
+  std::mt19937 rng(7);
+  int simple = 0, not_simple = 0;
+  for (int trial = 0; trial < 4000; ++trial) {
+    const int n = 3 + trial % 9;
+    Polygon polygon;
+    if (trial % 3 == 0) {
+      polygon = random_star(rng, {50, 50}, n, 10, 40);
+    } else {
+      std::uniform_int_distribution<int> grid(0, trial % 3 == 1 ? 4 : 100);
+      for (int i = 0; i < n; ++i) polygon.emplace_back(grid(rng), grid(rng));
+    }
+    const bool expected = is_simple_by_all_pairs(polygon);
+    ASSERT_EQ(is_simple(polygon), expected) << "trial " << trial;
+    (expected ? simple : not_simple) += 1;
+  }
+  EXPECT_GT(simple, 500);  // both outcomes well represented
+  EXPECT_GT(not_simple, 500);
+}
+
 TEST(Polygon, SegmentsCrossBasics) {
   EXPECT_TRUE(segments_cross({0, 0}, {10, 10}, {0, 10}, {10, 0}));
   // Disjoint.
