@@ -5,6 +5,7 @@
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
+#include <cmath>
 #include <cstring>
 #include <mutex>
 #include <opencv2/core/mat.hpp>
@@ -41,6 +42,23 @@ std::string shape_text(const py::array& a) {
 }
 
 std::string dtype_text(const py::array& a) { return py::str(a.dtype()).cast<std::string>(); }
+
+// NaN and infinity reach no stage: CGAL's triangulation crashes on them, the measures go silent.
+double finite_argument(double value, const char* what) {
+  if (!std::isfinite(value)) {
+    throw py::value_error(std::string(what) + " must be finite, got " + std::to_string(value));
+  }
+  return value;
+}
+
+void check_finite_row(const double* values, int count, py::ssize_t row, const char* what) {
+  for (int k = 0; k < count; ++k) {
+    if (!std::isfinite(values[k])) {
+      throw py::value_error(std::string(what) + " row " + std::to_string(row) + " is not finite (" +
+                            std::to_string(values[k]) + ")");
+    }
+  }
+}
 
 // A frame as a cv::Mat header over the numpy buffer. The array must outlive the Mat; when its
 // rows are not compact (a column slice, a negative stride) a C-contiguous copy is made and
@@ -97,7 +115,11 @@ Polygon array_to_polygon(const py::object& object, const char* what) {
   }
   Polygon polygon(static_cast<size_t>(array.shape(0)));
   auto view = array.unchecked<2>();
-  for (py::ssize_t i = 0; i < array.shape(0); ++i) polygon[i] = Point(view(i, 0), view(i, 1));
+  for (py::ssize_t i = 0; i < array.shape(0); ++i) {
+    const double row[2] = {view(i, 0), view(i, 1)};
+    check_finite_row(row, 2, i, what);
+    polygon[i] = Point(row[0], row[1]);
+  }
   return polygon;
 }
 
@@ -129,7 +151,9 @@ std::vector<Segment> array_to_segments(const py::object& object, const char* wha
   std::vector<Segment> segments(static_cast<size_t>(array.shape(0)));
   auto view = array.unchecked<2>();
   for (py::ssize_t i = 0; i < array.shape(0); ++i) {
-    segments[i] = Segment{Point(view(i, 0), view(i, 1)), Point(view(i, 2), view(i, 3))};
+    const double row[4] = {view(i, 0), view(i, 1), view(i, 2), view(i, 3)};
+    check_finite_row(row, 4, i, what);
+    segments[i] = Segment{Point(row[0], row[1]), Point(row[2], row[3])};
   }
   return segments;
 }
@@ -566,7 +590,7 @@ PYBIND11_MODULE(scbt, m) {
       [](const py::object& segments, const py::object& boundary, double max_mean_distance) {
         return segments_to_array(filter_segments_near_boundary(
             array_to_segments(segments, "segments"), array_to_polygon(boundary, "boundary"),
-            max_mean_distance));
+            finite_argument(max_mean_distance, "max_mean_distance")));
       },
       py::arg("segments"), py::arg("boundary"), py::arg("max_mean_distance") = 20.0,
       "Stage 2: the segments whose endpoints' and midpoint's mean distance to the closed\n"
@@ -606,15 +630,28 @@ PYBIND11_MODULE(scbt, m) {
       },
       py::arg("graph"), py::arg("candidate"), "The (N, 2) polygon of a cycle candidate.");
 
-  m.def("grouping_cost", &grouping_cost, py::arg("gap_length"), py::arg("area"),
-        "Eq. 1: Γ = gap_length / area (infinite without area).");
-  m.def("area_similarity", &area_similarity, py::arg("previous_area"), py::arg("candidate_area"),
-        "Eq. 2: min(A_p / A_c, A_c / A_p), 0 when either area is 0.");
+  m.def(
+      "grouping_cost",
+      [](double gap_length, double area) {
+        return grouping_cost(finite_argument(gap_length, "gap_length"),
+                             finite_argument(area, "area"));
+      },
+      py::arg("gap_length"), py::arg("area"),
+      "Eq. 1: Γ = gap_length / area (infinite without area).");
+  m.def(
+      "area_similarity",
+      [](double previous_area, double candidate_area) {
+        return area_similarity(finite_argument(previous_area, "previous_area"),
+                               finite_argument(candidate_area, "candidate_area"));
+      },
+      py::arg("previous_area"), py::arg("candidate_area"),
+      "Eq. 2: min(A_p / A_c, A_c / A_p), 0 when either area is 0.");
   m.def(
       "choose_boundary",
       [](const std::vector<CycleCandidate>& candidates, double previous_area,
          double min_similarity) {
-        return choose_boundary(candidates, previous_area, min_similarity);
+        return choose_boundary(candidates, finite_argument(previous_area, "previous_area"),
+                               finite_argument(min_similarity, "min_similarity"));
       },
       py::arg("candidates"), py::arg("previous_area"), py::arg("min_similarity") = 0.9,
       "Stage 6 (paper rule): the admissible candidate (similarity > min_similarity) of least\n"
@@ -637,7 +674,8 @@ PYBIND11_MODULE(scbt, m) {
       },
       py::arg("tracked"), py::arg("truth"), py::arg("canvas_size"),
       "The paper's alignment error E_AL (§IV-A) in pixels between two (N, 2) boundaries drawn\n"
-      "on a canvas of canvas_size = (width, height); inf when either is degenerate.");
+      "on a canvas of canvas_size = (width, height); inf when either is degenerate (fewer than\n"
+      "3 distinct points, no area); ValueError for NaN or infinite coordinates.");
 
   m.def(
       "area", [](const py::object& polygon) { return area(array_to_polygon(polygon, "polygon")); },

@@ -120,3 +120,46 @@ def test_stage_argument_errors():
         scbt.search_cycle_candidates(scbt.build_segment_graph(np.zeros((0, 4))), seed_stride=0)
     with pytest.raises(ValueError, match="canvas_size"):
         scbt.alignment_error(TRUTH, TRUTH, (0, 10))
+
+
+def _segments(bad=None):
+    segments = np.array([[10, 10, 60, 10], [60, 10, 60, 60], [60, 60, 10, 60], [10, 60, 10, 10]],
+                        float)
+    if bad is not None:
+        segments[1, 2] = bad
+    return segments
+
+
+def _polygon(bad):
+    polygon = TRUTH.copy()
+    polygon[2, 0] = bad
+    return polygon
+
+
+@pytest.mark.parametrize("bad", [np.nan, np.inf, -np.inf])
+@pytest.mark.parametrize(
+    "call",
+    [
+        lambda bad: scbt.build_segment_graph(_segments(bad)),
+        lambda bad: scbt.filter_segments_near_boundary(_segments(bad), TRUTH),
+        lambda bad: scbt.filter_segments_near_boundary(_segments(), _polygon(bad)),
+        lambda bad: scbt.filter_segments_near_boundary(_segments(), TRUTH, bad),
+        lambda bad: scbt.alignment_error(_polygon(bad), TRUTH, (320, 240)),
+        lambda bad: scbt.alignment_error(TRUTH, _polygon(bad), (320, 240)),
+        lambda bad: scbt.area(_polygon(bad)),
+        lambda bad: scbt.check_boundary_polygon(_polygon(bad)),
+        lambda bad: scbt.grouping_cost(bad, 10.0),
+        lambda bad: scbt.grouping_cost(1.0, bad),
+        lambda bad: scbt.area_similarity(bad, 10.0),
+        lambda bad: scbt.area_similarity(10.0, bad),
+        lambda bad: scbt.choose_boundary([], bad),
+        lambda bad: scbt.choose_boundary([], 100.0, bad),
+        lambda bad: scbt.Tracker().init(render(TRUTH), _polygon(bad)),
+        lambda bad: scbt.Tracker(filter_distance=bad),
+        lambda bad: scbt.Tracker(sigma=bad),
+    ],
+)
+def test_non_finite_input_raises_value_error(call, bad):
+    # scbt.build_segment_graph crashed inside CGAL on these before.
+    with pytest.raises(ValueError):
+        call(bad)
