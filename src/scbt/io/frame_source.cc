@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
@@ -103,12 +104,14 @@ class VideoSource : public FrameSource {
 
   // A frame that fails to decode before the announced end is reported (std::runtime_error) and
   // skipped: the next kMaxSkip frames are tried, and each failed one before a good frame is
-  // reported in turn. When none of them decodes, the video is taken to end there.
+  // reported in turn. When none of them decodes, the video is taken to end there. A frame the
+  // decoder skips silently shows as a jump of the timestamp: reported the same way (see
+  // frames_skipped_before).
   bool read(cv::Mat* frame) override {
     if (pending_bad_ > 0) {
       --pending_bad_;
       ++index_;
-      throw std::runtime_error(current_name() + ": cannot decode video frame");
+      throw std::runtime_error(current_name() + ": " + pending_reason_);
     }
     if (!pending_.empty()) {
       *frame = pending_;
@@ -118,6 +121,14 @@ class VideoSource : public FrameSource {
       return true;
     }
     if (capture_.read(*frame) && !frame->empty()) {
+      const int skipped = frames_skipped_before();
+      if (skipped > 0) {
+        pending_ = frame->clone();
+        pending_bad_ = skipped - 1;
+        pending_reason_ = "skipped by the video decoder (its timestamp jumps past it)";
+        ++index_;
+        throw std::runtime_error(current_name() + ": " + pending_reason_);
+      }
       ++index_;
       normalize_frame(frame, current_name());
       return true;
@@ -128,8 +139,10 @@ class VideoSource : public FrameSource {
     for (int failed = 1; failed <= kMaxSkip && index_ + failed < announced; ++failed) {
       if (capture_.read(pending_) && !pending_.empty()) {
         pending_bad_ = failed - 1;
+        pending_reason_ = "cannot decode video frame";
+        previous_msec_ = capture_.get(cv::CAP_PROP_POS_MSEC);
         ++index_;
-        throw std::runtime_error(current_name() + ": cannot decode video frame");
+        throw std::runtime_error(current_name() + ": " + pending_reason_);
       }
     }
     pending_.release();
@@ -147,12 +160,30 @@ class VideoSource : public FrameSource {
   std::string current_name() const override { return name_ + " frame " + std::to_string(index_); }
 
  private:
+  // Frames between the previous frame read and the one just read, judged by their timestamps:
+  // a gap of k frame periods (rounded; at least 1.5) means k - 1 frames were skipped. Only for
+  // files whose frame rate and frame count are known, and never more than the count leaves.
+  int frames_skipped_before() {
+    const double msec = capture_.get(cv::CAP_PROP_POS_MSEC);
+    const double previous = previous_msec_;
+    previous_msec_ = msec;
+    const double rate = fps();
+    const int announced = frame_count();
+    if (is_camera_ || rate <= 0 || announced < 0 || index_ == 0) return 0;
+    const double periods = (msec - previous) * rate / 1000.0;
+    if (!(periods >= 1.5)) return 0;
+    const int skipped = static_cast<int>(std::lround(periods)) - 1;
+    return std::min(skipped, announced - (index_ + 1));
+  }
+
   mutable cv::VideoCapture capture_;
   std::string name_;
   bool is_camera_;
   int index_ = 0;
-  int pending_bad_ = 0;  // failed frames still to report before `pending_`
-  cv::Mat pending_;      // a good frame read past failed ones
+  int pending_bad_ = 0;         // failed frames still to report before `pending_`
+  std::string pending_reason_;  // why they failed
+  cv::Mat pending_;             // a good frame read past failed ones
+  double previous_msec_ = 0.0;  // timestamp of the previous frame read
 };
 
 }  // namespace
@@ -160,11 +191,14 @@ class VideoSource : public FrameSource {
 std::vector<std::string> list_numbered_images(const std::string& folder) {
   std::vector<std::pair<long, std::string>> numbered;
   for (const fs::directory_entry& entry : fs::directory_iterator(folder)) {
-    if (!entry.is_regular_file()) continue;
     const fs::path& path = entry.path();
     if (!is_image_extension(path.extension().string())) continue;
     const std::string stem = path.stem().string();
     if (!all_digits(stem)) continue;
+    // A folder (or FIFO, ...) named like a frame would silently shift every later frame.
+    if (!entry.is_regular_file()) {
+      throw std::runtime_error(path.string() + ": named like a frame but not a regular file");
+    }
     numbered.emplace_back(std::stol(stem), path.string());
   }
   if (numbered.empty()) {
@@ -196,7 +230,15 @@ std::unique_ptr<FrameSource> open_frame_source(const std::string& input) {
   const fs::file_status status = fs::status(input, error);
   if (error || !fs::exists(status)) throw std::runtime_error(input + ": no such file or folder");
   if (fs::is_directory(status)) {
-    return std::make_unique<ImageFolderSource>(list_numbered_images(input));
+    std::vector<std::string> files = list_numbered_images(input);
+    // The initial polygon is the first frame's: a sequence starting at 0005 has lost frames.
+    const std::string first = fs::path(files.front()).stem().string();
+    if (std::stol(first) > 1) {
+      throw std::runtime_error(input + ": image numbering starts at " +
+                               fs::path(files.front()).filename().string() +
+                               ", not at 0 or 1 (frames missing?)");
+    }
+    return std::make_unique<ImageFolderSource>(std::move(files));
   }
   if (!fs::is_regular_file(status)) {
     throw std::runtime_error(input + ": neither a video file, an image folder nor a camera index");

@@ -25,12 +25,14 @@ class FrameSource {
   virtual std::string current_name() const = 0;
 };
 
-// Opens INPUT: an all-digit string is a camera index, a directory is an image folder, anything
-// else a video file. Throws std::runtime_error with a message naming the input on failure.
+// Opens INPUT: an all-digit string is a camera index, a directory is an image folder (numbered
+// from 0 or 1), anything else a video file. Throws std::runtime_error with a message naming the
+// input on failure.
 std::unique_ptr<FrameSource> open_frame_source(const std::string& input);
 
 // The image files of a folder whose names are numbers (e.g. 0001.jpg), sorted by that number.
-// Throws std::runtime_error if the folder has none or the numbering has a gap.
+// Throws std::runtime_error if the folder has none, the numbering has a gap, or an entry named
+// like an image (0001.jpg) is not a regular file.
 std::vector<std::string> list_numbered_images(const std::string& folder);
 
 }  // namespace scbt

@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <fstream>
 #include <opencv2/imgcodecs.hpp>
+#include <opencv2/videoio.hpp>
 #include <stdexcept>
 #include <string>
 
@@ -61,7 +62,6 @@ TEST_F(FrameSourceTest, ListsNumericallyNotLexically) {
   write_image("11.bmp", 11);
   write_text("notes.txt", "not an image");
   write_text("12a.png", "not numbered");
-  fs::create_directory(dir_ / "13.png");  // a folder, not a file
   const std::vector<std::string> files = list_numbered_images(folder());
   ASSERT_EQ(files.size(), 4u);
   EXPECT_EQ(fs::path(files[0]).filename(), "008.png");
@@ -89,6 +89,26 @@ TEST_F(FrameSourceTest, ListErrorsNameTheFolder) {
   EXPECT_EQ(list_numbered_images(folder()).size(), 4u);
   write_text("3.png", "x");  // the same number twice
   expect_error([&] { list_numbered_images(folder()); }, {folder(), "3"});
+}
+
+TEST_F(FrameSourceTest, AFolderNamedLikeAFrameIsAnError) {
+  write_text("0002.jpg", "x");
+  fs::create_directory(dir_ / "0001.jpg");
+  expect_error([&] { list_numbered_images(folder()); },
+               {"0001.jpg", "named like a frame but not a regular file"});
+}
+
+TEST_F(FrameSourceTest, NumberingMustStartAtZeroOrOne) {
+  write_image("0005.png", 10);
+  write_image("0006.png", 20);
+  expect_error([&] { open_frame_source(folder()); },
+               {folder(), "numbering starts at 0005.png, not at 0 or 1"});
+  write_image("0000.png", 10);
+  write_image("0001.png", 10);
+  write_image("0002.png", 10);
+  write_image("0003.png", 10);
+  write_image("0004.png", 10);
+  EXPECT_EQ(open_frame_source(folder())->frame_count(), 7);
 }
 
 TEST_F(FrameSourceTest, ReadsAFolderOfPngs) {
@@ -132,6 +152,65 @@ TEST_F(FrameSourceTest, NotAVideoFile) {
   write_text("clip.avi", "garbage, not a video");
   const std::string path = (dir_ / "clip.avi").string();
   expect_error([&] { open_frame_source(path); }, {path});
+}
+
+// An MJPG AVI of 10 frames whose frame `dropped` (1-based) is a zero-size chunk, as AVI marks a
+// dropped frame: FFmpeg's reader skips it silently and returns the next frame in its place, only
+// its timestamp tells. Frame i is filled with 20 * i.
+std::string write_video_with_a_dropped_frame(const fs::path& path, int dropped) {
+  {
+    cv::VideoWriter writer(path.string(), cv::CAP_FFMPEG,
+                           cv::VideoWriter::fourcc('M', 'J', 'P', 'G'), 10, cv::Size(64, 48));
+    for (int i = 1; i <= 10; ++i) writer.write(cv::Mat(48, 64, CV_8UC3, cv::Scalar::all(20 * i)));
+  }
+  std::ifstream in(path, std::ios::binary);
+  std::string data((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const size_t movi = data.find("movi");
+  const size_t index = data.find("idx1", movi);
+  std::vector<size_t> chunks;
+  for (size_t at = data.find("00dc", movi); at < index; at = data.find("00dc", at + 4)) {
+    chunks.push_back(at);
+  }
+  if (chunks.size() != 10 || index == std::string::npos) return "unexpected AVI layout";
+  auto put_u32 = [&data](size_t at, uint32_t value) {
+    for (int k = 0; k < 4; ++k) data[at + k] = static_cast<char>((value >> (8 * k)) & 0xFF);
+  };
+  auto get_u32 = [&data](size_t at) {
+    uint32_t value = 0;
+    for (int k = 0; k < 4; ++k)
+      value |= uint32_t(static_cast<unsigned char>(data[at + k])) << (8 * k);
+    return value;
+  };
+  const size_t chunk = chunks[dropped - 1];
+  const uint32_t size = get_u32(chunk + 4);
+  put_u32(chunk + 4, 0);  // an empty frame chunk, its old payload hidden in a JUNK chunk
+  data.replace(chunk + 8, 4, "JUNK");
+  put_u32(chunk + 12, size - 8);
+  for (size_t entry = index + 8; entry + 16 <= data.size(); entry += 16) {
+    const uint32_t offset = get_u32(entry + 8);
+    if (movi + offset == chunk || movi + offset == chunk + 4 || offset == chunk)
+      put_u32(entry + 12, 0);
+  }
+  std::ofstream(path, std::ios::binary) << data;
+  return "";
+}
+
+TEST_F(FrameSourceTest, AFrameTheVideoReaderSkipsIsReportedInPlace) {
+  const fs::path path = dir_ / "dropped.avi";
+  ASSERT_EQ(write_video_with_a_dropped_frame(path, 5), "");
+  const std::unique_ptr<FrameSource> source = open_frame_source(path.string());
+  ASSERT_EQ(source->frame_count(), 10);
+  cv::Mat frame;
+  for (int i = 1; i <= 10; ++i) {
+    SCOPED_TRACE("frame " + std::to_string(i));
+    if (i == 5) {
+      expect_error([&] { source->read(&frame); }, {"frame 5", "skipped by the video decoder"});
+      continue;
+    }
+    ASSERT_TRUE(source->read(&frame));
+    EXPECT_NEAR(cv::mean(frame)[0], 20 * i, 4);  // the frame that belongs here, not the next
+  }
+  EXPECT_FALSE(source->read(&frame));
 }
 
 }  // namespace
