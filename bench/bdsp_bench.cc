@@ -12,9 +12,10 @@
 #include <vector>
 
 #include "bench_inputs.h"
-#include "scbt/grouping/bdsp.h"
-#include "scbt/grouping/bdsp_generic.h"
-#include "scbt/grouping/segment_graph.h"
+#include "scbt/cycles/bdsp.h"
+#include "scbt/graph/segment_graph.h"
+#include "scbt/reference/bdsp_generic.h"
+#include "scbt/reference/candidate_gate.h"
 
 namespace scbt {
 namespace {

@@ -8,11 +8,12 @@
 #include <vector>
 
 #include "bench_inputs.h"
-#include "scbt/grouping/bdsp.h"
-#include "scbt/grouping/boundary_choice.h"
-#include "scbt/grouping/segment_filter.h"
-#include "scbt/grouping/segment_graph.h"
+#include "scbt/choice/boundary_choice.h"
+#include "scbt/cycles/bdsp.h"
+#include "scbt/filter/segment_filter.h"
+#include "scbt/graph/segment_graph.h"
 #include "scbt/lines/line_detector.h"
+#include "scbt/reference/plain_choice.h"
 #include "scbt/synthetic/scene.h"
 #include "scbt/tracker/tracker.h"
 

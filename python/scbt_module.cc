@@ -16,13 +16,13 @@
 #include <string>
 #include <vector>
 
+#include "scbt/choice/boundary_choice.h"
+#include "scbt/cycles/bdsp.h"
 #include "scbt/eval/alignment_error.h"
+#include "scbt/filter/segment_filter.h"
 #include "scbt/geometry/polygon.h"
 #include "scbt/geometry/polygon_io.h"
-#include "scbt/grouping/bdsp.h"
-#include "scbt/grouping/boundary_choice.h"
-#include "scbt/grouping/segment_filter.h"
-#include "scbt/grouping/segment_graph.h"
+#include "scbt/graph/segment_graph.h"
 #include "scbt/lines/line_detector.h"
 #include "scbt/render/annotate.h"
 #include "scbt/tracker/tracker.h"

@@ -7,7 +7,7 @@ packages=(
   cmake g++ make pkg-config
   libopencv-dev libopencv-contrib-dev
   libboost-graph-dev libcgal-dev libeigen3-dev
-  libcli11-dev nlohmann-json3-dev
+  libcli11-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   clang-format
   clang libclang-rt-14-dev

@@ -19,6 +19,7 @@
 #include "scbt/geometry/polygon_io.h"
 #include "scbt/io/atomic_file.h"
 #include "scbt/io/frame_source.h"
+#include "scbt/reference/generic_cycle_stage.h"
 #include "scbt/tracker/tracker.h"
 
 namespace scbt {
@@ -60,10 +61,10 @@ struct Samples {
   double detected = 0.0;
 };
 
-Samples make_samples(const std::string& config, const TrackerOptions& options) {
+Samples make_samples(const std::string& config, std::unique_ptr<Tracker> tracker) {
   Samples samples;
   samples.config = config;
-  samples.tracker = std::make_unique<Tracker>(options);
+  samples.tracker = std::move(tracker);
   return samples;
 }
 
@@ -146,17 +147,19 @@ BenchReport run_bench(const BenchRunOptions& options, std::ostream& log) {
     }
 
     std::vector<Samples> runs;
-    runs.push_back(make_samples("optimised", options.tracker));
+    runs.push_back(make_samples("optimised", std::make_unique<Tracker>(options.tracker)));
     if (options.compare) {
       TrackerOptions plain = options.tracker;
       plain.detector.crop_to_boundary = false;
-      plain.bdsp.generic_graph = true;
       // The straightforward detector is OpenCV's EdgeDrawing, the library implementation of the
       // paper's EDLines; other detectors are compared with themselves on the whole frame.
       if (plain.detector.kind == LineDetectorKind::kEdLines) {
         plain.detector.kind = LineDetectorKind::kOpenCvEdLines;
       }
-      runs.push_back(make_samples("straightforward", plain));
+      // Stages 5-6 from reference/: BDSP on Boost.Graph, every candidate materialised.
+      runs.push_back(make_samples("straightforward", std::make_unique<Tracker>(plain, [] {
+                                    return std::make_unique<GenericCycleStage>();
+                                  })));
     }
 
     // Each configuration tracks the sequence in a pass of its own, as it would run alone, and

@@ -1,5 +1,5 @@
 // Squared distances from many points to one segment, the inner loop of the boundary distances
-// between a fixed boundary and many candidate cycles (grouping/boundary_distance_cache.h).
+// between a fixed boundary and many candidate cycles (choice/boundary_distance_cache.h).
 #pragma once
 
 #include <cstddef>

@@ -29,7 +29,7 @@
 #include <optional>
 
 #include "scbt/geometry/polygon.h"
-#include "scbt/grouping/segment_graph.h"
+#include "scbt/graph/segment_graph.h"
 
 namespace scbt {
 

@@ -4,9 +4,9 @@
 #include <stdexcept>
 #include <string>
 
-#include "scbt/grouping/boundary_choice.h"
-#include "scbt/grouping/segment_filter.h"
-#include "scbt/grouping/segment_graph.h"
+#include "scbt/choice/boundary_choice.h"
+#include "scbt/filter/segment_filter.h"
+#include "scbt/graph/segment_graph.h"
 #include "scbt/peers/peer_common.h"
 
 namespace scbt {

@@ -7,11 +7,8 @@
 #include <string>
 #include <utility>
 
+#include "scbt/filter/segment_filter.h"
 #include "scbt/geometry/polygon_io.h"
-#include "scbt/grouping/bdsp.h"
-#include "scbt/grouping/bdsp_generic.h"
-#include "scbt/grouping/boundary_choice.h"
-#include "scbt/grouping/segment_filter.h"
 #include "scbt/lines/line_detector.h"
 #include "scbt/tracker/motion_estimate.h"
 
@@ -47,9 +44,15 @@ void to_gray(const cv::Mat& frame, cv::Mat* gray) {
   }
 }
 
-Tracker::Tracker(const TrackerOptions& options) : options_(options) {
+Tracker::Tracker(const TrackerOptions& options)
+    : Tracker(options, [] { return std::make_unique<FastCycleStage>(); }) {}
+
+Tracker::Tracker(const TrackerOptions& options,
+                 const std::function<std::unique_ptr<CycleStage>()>& make_cycle_stage)
+    : options_(options) {
   options_.check();
   detector_ = make_line_detector(options_.detector);
+  for (Attempt& a : attempts_) a.cycles = make_cycle_stage();
 }
 
 Tracker::~Tracker() = default;
@@ -77,29 +80,9 @@ void Tracker::init(const cv::Mat& frame, const Polygon& polygon) {
   frame_size_ = frame.size();
 }
 
-int Tracker::Attempt::num_candidates() const {
-  return generic ? static_cast<int>(materialised.size()) : search.size();
-}
-
-Polygon Tracker::Attempt::chosen_polygon() const {
-  if (generic) return candidate_polygon(graph, materialised[choice->index]);
-  thread_local std::vector<int> cycle;
-  search.vertices(choice->index, &cycle);
-  Polygon polygon;
-  polygon.reserve(cycle.size());
-  for (int v : cycle) polygon.push_back(graph.vertices[v]);
-  return polygon;
-}
-
-double Tracker::Attempt::chosen_area() const {
-  return generic ? materialised[choice->index].area : search.candidates()[choice->index].area;
-}
-
 void Tracker::attempt(const cv::Mat& frame, const Polygon& prior, Attempt* a) {
   a->num_dropped = 0;
   a->choice.reset();
-  a->materialised.clear();
-  a->generic = options_.bdsp.generic_graph;
   const Clock::time_point line_start = Clock::now();
   // Only segments near the prior boundary can survive the distance filter, so only the window
   // around it is converted and searched (crop_to_boundary; whole frame otherwise).
@@ -138,27 +121,14 @@ void Tracker::attempt(const cv::Mat& frame, const Polygon& prior, Attempt* a) {
   a->stages.filter_ms = lap();
   build_segment_graph(a->kept, &a->graph);
   a->stages.graph_ms = lap();
-  if (a->generic) {
-    a->materialised = search_cycle_candidates_generic(a->graph, options_.bdsp);
-  } else {
-    a->search.run(a->graph, options_.bdsp);
-  }
+  a->cycles->search(a->graph, options_.bdsp);
   a->stages.search_ms = lap();
   // The choice asks for the distances of the graph's points to `prior`; the filter computed
   // them for the kept segments (unless the cap reordered them).
   KnownSegmentDistances known{&a->kept, &a->kept_distances};
   const KnownSegmentDistances* known_if_any = a->num_dropped == 0 ? &known : nullptr;
-  if (a->generic) {
-    a->choice = chooser_.choose(
-        a->materialised,
-        [&](int index, std::vector<int>* cycle) { *cycle = a->materialised[index].vertices; },
-        a->graph, prior, options_.min_area_similarity, options_.cost_tolerance, known_if_any);
-  } else {
-    a->choice = chooser_.choose(
-        a->search.candidates(),
-        [&](int index, std::vector<int>* cycle) { a->search.vertices(index, cycle); }, a->graph,
-        prior, options_.min_area_similarity, options_.cost_tolerance, known_if_any);
-  }
+  a->choice = a->cycles->choose(&chooser_, a->graph, prior, options_.min_area_similarity,
+                                options_.cost_tolerance, known_if_any);
   a->stages.choice_ms = lap();
   a->grouping_ms =
       a->stages.filter_ms + a->stages.graph_ms + a->stages.search_ms + a->stages.choice_ms;
@@ -210,8 +180,8 @@ TrackResult Tracker::track(const cv::Mat& frame) {
   }
 
   if (a->choice) {
-    boundary_ = a->chosen_polygon();
-    boundary_area_ = a->chosen_area();
+    boundary_ = a->cycles->polygon(a->graph, a->choice->index);
+    boundary_area_ = a->cycles->area(a->choice->index);
     result.cost = a->choice->cost;
     result.area_similarity = a->choice->similarity;
     if (options_.recover_by_motion) {
@@ -235,7 +205,7 @@ TrackResult Tracker::track(const cv::Mat& frame) {
   result.num_dropped = a->num_dropped;
   result.num_vertices = a->graph.num_vertices();
   result.num_edges = a->graph.num_edges();
-  result.num_candidates = a->num_candidates();
+  result.num_candidates = a->cycles->num_candidates();
   if (keep_debug_) {
     debug_.detected = a->detected;
     debug_.graph = a->graph;

@@ -1,14 +1,15 @@
 // The per-frame salient closed boundary tracker: detect -> filter -> gap fill -> BDSP -> choose.
 #pragma once
 
+#include <functional>
 #include <memory>
 #include <opencv2/core/mat.hpp>
 #include <optional>
 
+#include "scbt/choice/boundary_choice.h"
 #include "scbt/geometry/polygon.h"
-#include "scbt/grouping/bdsp.h"
-#include "scbt/grouping/boundary_choice.h"
-#include "scbt/grouping/segment_graph.h"
+#include "scbt/graph/segment_graph.h"
+#include "scbt/tracker/cycle_stage.h"
 #include "scbt/tracker/tracker_options.h"
 
 namespace scbt {
@@ -50,6 +51,10 @@ class Tracker {
  public:
   // Throws std::invalid_argument when the options are invalid.
   explicit Tracker(const TrackerOptions& options = {});
+  // Runs stages 5-6 with the stages `make_cycle_stage` makes instead of FastCycleStage (how
+  // `scbt bench` assembles the straightforward pipeline from reference/).
+  Tracker(const TrackerOptions& options,
+          const std::function<std::unique_ptr<CycleStage>()>& make_cycle_stage);
   ~Tracker();
   Tracker(Tracker&&) noexcept;
   Tracker& operator=(Tracker&&) noexcept;
@@ -90,17 +95,11 @@ class Tracker {
     std::vector<double> kept_distances;  // the filter's, 3 per kept segment (segment_filter.h)
     int num_dropped = 0;
     SegmentGraph graph;
-    CycleSearch search;                        // the candidates (BdspOptions::generic_graph off)
-    std::vector<CycleCandidate> materialised;  // the candidates of the generic-graph baseline
-    bool generic = false;                      // materialised holds the candidates
+    std::unique_ptr<CycleStage> cycles;  // stages 5-6
     std::optional<BoundaryChoice> choice;
     double line_ms = 0.0;
     double grouping_ms = 0.0;
     StageTimes stages;
-
-    int num_candidates() const;
-    Polygon chosen_polygon() const;  // requires choice
-    double chosen_area() const;
   };
   void attempt(const cv::Mat& frame, const Polygon& prior, Attempt* a);
   Attempt attempts_[2];

@@ -1,7 +1,7 @@
 // Options of the boundary tracker. Defaults are the paper's values.
 #pragma once
 
-#include "scbt/grouping/bdsp.h"
+#include "scbt/cycles/bdsp.h"
 #include "scbt/lines/line_detector.h"
 
 namespace scbt {

@@ -1,5 +1,5 @@
 // Structural properties of the gap-filled segment graph over random non-crossing segment sets.
-#include "scbt/grouping/segment_graph.h"
+#include "scbt/graph/segment_graph.h"
 
 #include <CGAL/Delaunay_triangulation_2.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>

@@ -1,5 +1,5 @@
 // Dijkstra with a blocked edge against Bellman-Ford on random small graphs.
-#include "scbt/grouping/shortest_paths.h"
+#include "scbt/reference/shortest_paths.h"
 
 #include <gtest/gtest.h>
 

@@ -1,5 +1,5 @@
 // The tracking criterion (Eq. 1-2), the stabilised choice and the boundary distance.
-#include "scbt/grouping/boundary_choice.h"
+#include "scbt/choice/boundary_choice.h"
 
 #include <gtest/gtest.h>
 
@@ -8,7 +8,8 @@
 #include <limits>
 #include <random>
 
-#include "scbt/grouping/segment_graph.h"
+#include "scbt/graph/segment_graph.h"
+#include "scbt/reference/plain_choice.h"
 
 namespace scbt {
 namespace {

@@ -1,4 +1,4 @@
-#include "scbt/grouping/boundary_distance_cache.h"
+#include "scbt/choice/boundary_distance_cache.h"
 
 #include <algorithm>
 #include <cmath>

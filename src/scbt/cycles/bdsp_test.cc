@@ -1,5 +1,5 @@
 // BDSP cycle candidates: structural properties on random graphs, and recovery of a known cycle.
-#include "scbt/grouping/bdsp.h"
+#include "scbt/cycles/bdsp.h"
 
 #include <gtest/gtest.h>
 
@@ -14,9 +14,11 @@
 #include <tuple>
 #include <utility>
 
-#include "scbt/grouping/boundary_choice.h"
-#include "scbt/grouping/segment_graph.h"
-#include "scbt/grouping/shortest_paths.h"
+#include "scbt/choice/boundary_choice.h"
+#include "scbt/graph/segment_graph.h"
+#include "scbt/reference/bdsp_generic.h"
+#include "scbt/reference/candidate_gate.h"
+#include "scbt/reference/shortest_paths.h"
 
 namespace scbt {
 namespace {
@@ -701,8 +703,9 @@ TEST(Bdsp, TriangleOfSegments) {
   options.seed_stride = 1;
   for (bool generic : {false, true}) {
     SCOPED_TRACE(generic ? "generic graph" : "CycleSearch");
-    options.generic_graph = generic;
-    const std::vector<CycleCandidate> candidates = search_cycle_candidates(graph, options);
+    const std::vector<CycleCandidate> candidates =
+        generic ? search_cycle_candidates_generic(graph, options)
+                : search_cycle_candidates(graph, options);
     ASSERT_FALSE(candidates.empty());
     for (const CycleCandidate& c : candidates) {
       EXPECT_EQ(c.vertices.size(), 3u);

@@ -1,4 +1,4 @@
-#include "scbt/grouping/shortest_paths.h"
+#include "scbt/reference/shortest_paths.h"
 
 #include <algorithm>
 #include <functional>

@@ -4,9 +4,9 @@
 #include <utility>
 #include <vector>
 
+#include "scbt/cycles/segment_units.h"
 #include "scbt/geometry/polygon.h"
-#include "scbt/grouping/segment_graph.h"
-#include "scbt/grouping/segment_units.h"
+#include "scbt/graph/segment_graph.h"
 
 namespace scbt {
 
@@ -20,30 +20,9 @@ struct CycleCandidate {
 struct BdspOptions {
   // Seeds are every `seed_stride`-th detected segment (the paper samples every other one: 2).
   int seed_stride = 2;
-  // Search with the generic-graph baseline (search_cycle_candidates_generic: Boost.Graph's
-  // Dijkstra, every candidate materialised) instead of CycleSearch: the straightforward
-  // configuration, for benchmarks only. Same candidates up to shortest-path ties.
-  bool generic_graph = false;
 
   // Throws std::invalid_argument naming a bad value (seed_stride < 1).
   void check() const;
-};
-
-// What the boundary choice (StableChooser, boundary_choice.h) will do with the candidates, so
-// that CycleSearch can skip work that cannot change its choice. The choice admits candidates of
-// area similarity min(A_p / A_c, A_c / A_p) > min_similarity, takes the least grouping cost
-// Γ* = gap / area among them and, with a tolerance, every admissible candidate of
-// Γ <= Γ* (1 + tolerance) as a near tie.
-struct CandidateGate {
-  double previous_area = 0.0;   // A_p, the previous boundary's area
-  double min_similarity = 0.9;  // as TrackerOptions::min_area_similarity
-  double tolerance = 0.1;       // as TrackerOptions::cost_tolerance (0: only the least Γ)
-
-  // Throws std::invalid_argument naming a bad value: previous_area not finite and > 0,
-  // min_similarity outside [0, 1], tolerance negative or not finite.
-  void check() const;
-  // The largest admissible area, A_p / min_similarity (infinity for min_similarity 0).
-  double max_area() const;
 };
 
 // What the boundary choice needs of a candidate; its vertices are listed on demand
@@ -54,57 +33,36 @@ struct CandidateSummary {
   int seed_edge = -1;       // the detected edge e_i the cycle was grown from
 };
 
-// The BDSP search of search_cycle_candidates, without materialising candidates: each candidate
-// is a summary (gap, area, seed) plus the meeting vertex of its two shortest paths, and the
-// search keeps each seed's two shortest-path trees (parent arrays) so that the vertices of any
-// candidate can be listed afterwards. What makes it fast, each tested against the
-// straightforward search:
-//  - Dijkstra runs over contracted segments (segment_units.h): both ends of a detected segment
-//    are one node, parallel edges between two nodes are one arc (the lightest), so each search
-//    settles about half as many nodes. The seed's segment is split back into s1 and s2 for its
-//    two searches, its arcs taken from the vertices. Each node's entry vertex hangs from the
-//    vertex its parent arc leaves, the segment's other end from the entry: the trees over graph
-//    vertices, shortest-path trees like the vertex search's. Where path lengths tie they can
-//    pick other shortest paths than a vertex search (then other, equally valid, candidates);
-//    without ties they are the same trees and the candidates are the same, in the same order;
-//  - the area comes from root-to-vertex sums of shoelace terms along each tree, not a walk;
-//  - the meeting vertex is where the two trees' parents first differ up from the third vertex
-//    (precomputed per seed), plus a walk above it cut short by a bound on d1 - d2 (the paths can
-//    meet again only where rounded path lengths tie differently from the two roots);
-//  - Dijkstra keeps its frontier (about a dozen nodes) as an unordered array of 128-bit
-//    (distance, id) keys scanned for the least and stops once every third vertex is settled;
-//  - arcs that a strictly shorter two-arc detour makes useless to every search are left out
-//    (drop_dominated_arcs);
-//  - nothing is allocated once the buffers have grown to the graph's size.
-// options.generic_graph is ignored here. Not thread-safe; use one object per thread.
+// Lets CycleSearch keep only the candidates a caller can use and bound each seed's Dijkstras by
+// the longest gap such a candidate can have (reference/candidate_gate.h prunes for the choice).
+class CandidatePruner {
+ public:
+  virtual ~CandidatePruner() = default;
+  // Called once at the start of a run.
+  virtual void start() = 0;
+  // The gap bound for the next seed's searches (infinity: unbounded).
+  virtual double gap_limit() const = 0;
+  // Whether to keep a found candidate; called in list order.
+  virtual bool keep(const CandidateSummary& candidate) = 0;
+};
+
+// The BDSP search of search_cycle_candidates without materialising candidates: each candidate
+// is a summary plus the vertex where its two shortest paths meet; each seed's two trees are kept
+// so that any candidate's cycle can be listed afterwards. Same candidates, in the same order, as
+// the straightforward search (reference/bdsp_generic.h) up to shortest-path ties. It is fast
+// because Dijkstra runs over contracted segments (segment_units.h) with a small unordered
+// frontier, areas come from root-to-vertex shoelace sums, and nothing is allocated once warm
+// (docs/performance.md). Not thread-safe; use one object per thread.
 //
-// With a CandidateGate (run's `gate`), the search keeps only candidates the gated choice can
-// pick, and bounds its Dijkstras (exact rule, tested):
-//  - Seeds are searched in order; before seed i, Γ_i is the least Γ of the admissible candidates
-//    kept from seeds 0..i-1 (infinity before any), and the seed's gap bound is
-//    G_i = (1 + tolerance) Γ_i max_area() (1 + 1e-9) (seed_limits()[i]; infinity while Γ_i is).
-//    A near tie has gap = Γ area <= (1 + tolerance) Γ* max_area() <= G_i.
-//  - Both Dijkstras of seed i settle only nodes within G_i of their root: an arc u -> w is not
-//    relaxed when d(u) + weight > G_i (arcs are sorted by weight, so the loop ends there).
-//    Distances and parents of the vertices within G_i are the unbounded search's, bit for bit
-//    (ties included: the frontier order is (distance, id), whatever was left out).
-//  - So seed i yields the unbounded candidates whose third vertex lies within G_i of both s1
-//    and s2 (the repeat-of-a-cycle skip then only sees those thirds), filtered: a candidate is
-//    kept iff it is admissible and Γ <= Γ_best (1 + tolerance), Γ_best the least admissible Γ
-//    kept before it (in list order), computed with the chooser's own expressions.
-//  - The loss: a cycle whose gap is within G_i but whose every third vertex lies beyond G_i
-//    (the two paths share a long tail) is not found. The chooser's result can then differ from
-//    the unbounded one; the test measures how often on random graphs.
-//  - The order is the unbounded search's but for cycles first met from a third vertex the bound
-//    left out (then listed where a later third meets them). num_admissible of the choice then
-//    counts the kept candidates only (the ones that can be near ties), not all admissible ones.
-// Both Dijkstras stop once the third vertices settled by the first are settled (either way).
+// With a pruner, seed i's Dijkstras settle only units within pruner->gap_limit() of their root
+// (arcs u -> w with d(u) + weight > limit are not relaxed), so distances and parents within the
+// limit are the unbounded search's bit for bit; candidates the pruner rejects are dropped.
 class CycleSearch {
  public:
-  // Throws std::invalid_argument for bad options (BdspOptions::check, CandidateGate::check).
-  // gate == nullptr: every candidate, unbounded searches (as search_cycle_candidates).
+  // Throws std::invalid_argument for bad options (BdspOptions::check, the pruner's start()).
+  // pruner == nullptr: every candidate, unbounded searches (as search_cycle_candidates).
   void run(const SegmentGraph& graph, const BdspOptions& options = {},
-           const CandidateGate* gate = nullptr);
+           CandidatePruner* pruner = nullptr);
 
   // The candidates of search_cycle_candidates, in the same order, with bit-identical gaps and
   // areas equal to ~1e-9 relative (summed in another order). Where path lengths tie, other
@@ -193,8 +151,7 @@ class CycleSearch {
 // off so that every candidate is a cycle that visits each vertex once. A third vertex whose paths
 // meet where an earlier one's did (same cycle) is skipped, as are cycles of fewer than three
 // vertices; other repeats of a cycle can remain (they carry identical gap and, up to rounding,
-// area). Runs CycleSearch (one per thread) and materialises every candidate, or, when
-// options.generic_graph is set, search_cycle_candidates_generic.
+// area). Runs CycleSearch (one per thread) and materialises every candidate.
 std::vector<CycleCandidate> search_cycle_candidates(const SegmentGraph& graph,
                                                     const BdspOptions& options = {});
 

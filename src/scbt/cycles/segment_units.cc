@@ -1,4 +1,4 @@
-#include "scbt/grouping/segment_units.h"
+#include "scbt/cycles/segment_units.h"
 
 #include <algorithm>
 

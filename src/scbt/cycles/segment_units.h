@@ -3,7 +3,7 @@
 
 #include <vector>
 
-#include "scbt/grouping/segment_graph.h"
+#include "scbt/graph/segment_graph.h"
 
 namespace scbt {
 

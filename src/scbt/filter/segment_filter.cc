@@ -1,4 +1,4 @@
-#include "scbt/grouping/segment_filter.h"
+#include "scbt/filter/segment_filter.h"
 
 #include "scbt/geometry/boundary_query.h"
 

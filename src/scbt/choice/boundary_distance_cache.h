@@ -6,7 +6,7 @@
 
 #include "scbt/geometry/boundary_query.h"
 #include "scbt/geometry/polygon.h"
-#include "scbt/grouping/segment_graph.h"
+#include "scbt/graph/segment_graph.h"
 
 namespace scbt {
 

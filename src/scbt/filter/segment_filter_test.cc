@@ -1,5 +1,5 @@
 // The distance filter against an independent brute-force computation.
-#include "scbt/grouping/segment_filter.h"
+#include "scbt/filter/segment_filter.h"
 
 #include <gtest/gtest.h>
 

@@ -7,8 +7,8 @@
 #include <optional>
 #include <vector>
 
-#include "scbt/grouping/bdsp.h"
-#include "scbt/grouping/boundary_distance_cache.h"
+#include "scbt/choice/boundary_distance_cache.h"
+#include "scbt/cycles/bdsp.h"
 
 namespace scbt {
 
@@ -40,24 +40,11 @@ struct BoundaryChoice {
 std::optional<BoundaryChoice> choose_boundary(const std::vector<CycleCandidate>& candidates,
                                               double previous_area, double min_similarity);
 
-// Symmetric mean distance between two closed boundaries, in the spirit of E_AL but computed on
-// the polylines: the larger of the length-weighted mean distances from each to the other.
-double boundary_distance(const Polygon& a, const Polygon& b);
-
-// Stabilised choice: among admissible candidates whose cost Γ is within (1 + tolerance) of the
-// least one, the one closest to the previous boundary (boundary_distance). Near-ties in
-// saliency are common (inner and outer rim of a cup, a spike through a stray segment); picking
-// the one that moved least keeps the boundary from ratcheting outwards. tolerance 0 is the
-// paper's rule.
-std::optional<BoundaryChoice> choose_boundary_stable(const std::vector<CycleCandidate>& candidates,
-                                                     const SegmentGraph& graph,
-                                                     const Polygon& previous, double min_similarity,
-                                                     double tolerance);
-
 // The stabilised choice with its buffers and distance cache kept across frames, over any list
 // of candidates that carry `gap_length` and `area`, whose cycles (graph vertex ids) are listed on
 // demand by `list_vertices(index, std::vector<int>* out)`: only near-tied candidates are ever
-// listed. Chooses exactly as choose_boundary_stable does (distances equal up to rounding).
+// listed. Chooses exactly as the straightforward choose_boundary_stable
+// (reference/plain_choice.h) does, distances equal up to rounding.
 // `known` (optional): distances to `previous` already computed for the graph's segments.
 class StableChooser {
  public:

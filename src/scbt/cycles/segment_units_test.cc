@@ -1,6 +1,6 @@
 // Contraction of the segment graph: units, their arcs, and that dropping dominated arcs changes
 // no distance.
-#include "scbt/grouping/segment_units.h"
+#include "scbt/cycles/segment_units.h"
 
 #include <gtest/gtest.h>
 
@@ -11,7 +11,7 @@
 #include <set>
 #include <vector>
 
-#include "scbt/grouping/segment_graph.h"
+#include "scbt/graph/segment_graph.h"
 
 namespace scbt {
 namespace {

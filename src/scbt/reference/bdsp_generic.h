@@ -3,8 +3,8 @@
 
 #include <vector>
 
-#include "scbt/grouping/bdsp.h"
-#include "scbt/grouping/segment_graph.h"
+#include "scbt/cycles/bdsp.h"
+#include "scbt/graph/segment_graph.h"
 
 namespace scbt {
 
@@ -14,8 +14,8 @@ namespace scbt {
 // boost::dijkstra_shortest_paths on a filtered_graph that hides the seed edge, and every
 // candidate's cycle is materialised and its area computed by walking it. Where shortest paths
 // tie, Boost may pick other parents, so the candidates can differ; the least cost does not.
-// The "generic graph" configuration the fast search is measured against (BdspOptions::
-// generic_graph); not for production use.
+// The "generic graph" configuration the fast search is measured against (in
+// `scbt bench`, through GenericCycleStage); not for production use.
 std::vector<CycleCandidate> search_cycle_candidates_generic(const SegmentGraph& graph,
                                                             const BdspOptions& options = {});
 

@@ -4,7 +4,7 @@
 #include <utility>
 #include <vector>
 
-#include "scbt/grouping/segment_graph.h"
+#include "scbt/graph/segment_graph.h"
 
 namespace scbt {
 

@@ -1,4 +1,4 @@
-#include "scbt/grouping/bdsp_generic.h"
+#include "scbt/reference/bdsp_generic.h"
 
 #include <algorithm>
 #include <boost/graph/adjacency_list.hpp>

@@ -1,4 +1,4 @@
-#include "scbt/grouping/bdsp.h"
+#include "scbt/cycles/bdsp.h"
 
 #include <algorithm>
 #include <cmath>
@@ -8,9 +8,6 @@
 #include <stdexcept>
 #include <string>
 
-#include "scbt/grouping/bdsp_generic.h"
-#include "scbt/grouping/boundary_choice.h"
-
 namespace scbt {
 
 void BdspOptions::check() const {
@@ -18,26 +15,6 @@ void BdspOptions::check() const {
     throw std::invalid_argument("bdsp seed_stride must be at least 1, got " +
                                 std::to_string(seed_stride));
   }
-}
-
-void CandidateGate::check() const {
-  if (!(previous_area > 0.0) || !std::isfinite(previous_area)) {
-    throw std::invalid_argument("candidate gate previous_area must be finite and positive, got " +
-                                std::to_string(previous_area));
-  }
-  if (!(min_similarity >= 0.0 && min_similarity <= 1.0)) {
-    throw std::invalid_argument("candidate gate min_similarity must be in [0, 1], got " +
-                                std::to_string(min_similarity));
-  }
-  if (!(tolerance >= 0.0) || !std::isfinite(tolerance)) {
-    throw std::invalid_argument("candidate gate tolerance must be finite and >= 0, got " +
-                                std::to_string(tolerance));
-  }
-}
-
-double CandidateGate::max_area() const {
-  return min_similarity > 0.0 ? previous_area / min_similarity
-                              : std::numeric_limits<double>::infinity();
 }
 
 Polygon candidate_polygon(const SegmentGraph& graph, const CycleCandidate& candidate) {
@@ -316,14 +293,11 @@ void CycleSearch::first_tree_pass(const Point* points, int s1, int settled, int 
 }
 
 void CycleSearch::run(const SegmentGraph& graph, const BdspOptions& options,
-                      const CandidateGate* gate) {
+                      CandidatePruner* pruner) {
   const int n = graph.num_vertices();
   options.check();
-  if (gate != nullptr) gate->check();
+  if (pruner != nullptr) pruner->start();
   constexpr double kInfinity = std::numeric_limits<double>::infinity();
-  // The gate's bounds: the least admissible cost kept so far, the largest admissible area.
-  double best_cost = kInfinity;
-  const double max_area = gate != nullptr ? gate->max_area() : kInfinity;
   seed_limits_.clear();
   const int stride = options.seed_stride;
   const int num_detected = static_cast<int>(graph.detected_edges.size());
@@ -395,11 +369,7 @@ void CycleSearch::run(const SegmentGraph& graph, const BdspOptions& options,
     int* parent1 = parents_.data() + static_cast<size_t>(2 * slot) * n;
     int* parent2 = parent1 + n;
     open_seed(graph, seed, s1, s2);
-    // The seed's gap bound (CandidateGate in bdsp.h); the slack covers rounding.
-    double limit = kInfinity;
-    if (gate != nullptr && best_cost < kInfinity) {
-      limit = best_cost > 0.0 ? (1.0 + gate->tolerance) * best_cost * max_area * (1.0 + 1e-9) : 0.0;
-    }
+    const double limit = pruner != nullptr ? pruner->gap_limit() : kInfinity;
     seed_limits_.push_back(limit);
     const int settled1 = shortest_paths(0, unit_of[s1], num_third_units_, limit, slot);
     // Only the third vertices the first tree settled can close a cycle: the second search
@@ -462,14 +432,7 @@ void CycleSearch::run(const SegmentGraph& graph, const BdspOptions& options,
       const int meeting_unit = unit_of[meeting];
       c.gap_length = d1[meeting_unit] + d2[meeting_unit];
       c.area = 0.5 * std::abs(sum1[meeting] - sum2[meeting]);
-      if (gate != nullptr) {
-        // What StableChooser::choose computes: a candidate not admissible, or costlier than
-        // (1 + tolerance) times a cost already found (>= the least one), is never a near tie.
-        if (!(area_similarity(gate->previous_area, c.area) > gate->min_similarity)) continue;
-        const double cost = grouping_cost(c.gap_length, c.area);
-        if (cost > best_cost * (1.0 + gate->tolerance)) continue;
-        best_cost = std::min(best_cost, cost);
-      }
+      if (pruner != nullptr && !pruner->keep(c)) continue;
       candidates_.push_back(c);
       found_.push_back({slot, meeting});
     }
@@ -501,7 +464,6 @@ CycleCandidate CycleSearch::candidate(int k) const {
 
 std::vector<CycleCandidate> search_cycle_candidates(const SegmentGraph& graph,
                                                     const BdspOptions& options) {
-  if (options.generic_graph) return search_cycle_candidates_generic(graph, options);
   thread_local CycleSearch search;
   search.run(graph, options);
   std::vector<CycleCandidate> candidates(search.size());
