@@ -11,6 +11,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "scbt/io/avi_test_util.h"
+
 namespace scbt {
 namespace {
 
@@ -154,50 +156,11 @@ TEST_F(FrameSourceTest, NotAVideoFile) {
   expect_error([&] { open_frame_source(path); }, {path});
 }
 
-// An MJPG AVI of 10 frames whose frame `dropped` (1-based) is a zero-size chunk, as AVI marks a
-// dropped frame: FFmpeg's reader skips it silently and returns the next frame in its place, only
-// its timestamp tells. Frame i is filled with 20 * i.
-std::string write_video_with_a_dropped_frame(const fs::path& path, int dropped) {
-  {
-    cv::VideoWriter writer(path.string(), cv::CAP_FFMPEG,
-                           cv::VideoWriter::fourcc('M', 'J', 'P', 'G'), 10, cv::Size(64, 48));
-    for (int i = 1; i <= 10; ++i) writer.write(cv::Mat(48, 64, CV_8UC3, cv::Scalar::all(20 * i)));
-  }
-  std::ifstream in(path, std::ios::binary);
-  std::string data((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  const size_t movi = data.find("movi");
-  const size_t index = data.find("idx1", movi);
-  std::vector<size_t> chunks;
-  for (size_t at = data.find("00dc", movi); at < index; at = data.find("00dc", at + 4)) {
-    chunks.push_back(at);
-  }
-  if (chunks.size() != 10 || index == std::string::npos) return "unexpected AVI layout";
-  auto put_u32 = [&data](size_t at, uint32_t value) {
-    for (int k = 0; k < 4; ++k) data[at + k] = static_cast<char>((value >> (8 * k)) & 0xFF);
-  };
-  auto get_u32 = [&data](size_t at) {
-    uint32_t value = 0;
-    for (int k = 0; k < 4; ++k)
-      value |= uint32_t(static_cast<unsigned char>(data[at + k])) << (8 * k);
-    return value;
-  };
-  const size_t chunk = chunks[dropped - 1];
-  const uint32_t size = get_u32(chunk + 4);
-  put_u32(chunk + 4, 0);  // an empty frame chunk, its old payload hidden in a JUNK chunk
-  data.replace(chunk + 8, 4, "JUNK");
-  put_u32(chunk + 12, size - 8);
-  for (size_t entry = index + 8; entry + 16 <= data.size(); entry += 16) {
-    const uint32_t offset = get_u32(entry + 8);
-    if (movi + offset == chunk || movi + offset == chunk + 4 || offset == chunk)
-      put_u32(entry + 12, 0);
-  }
-  std::ofstream(path, std::ios::binary) << data;
-  return "";
-}
-
 TEST_F(FrameSourceTest, AFrameTheVideoReaderSkipsIsReportedInPlace) {
   const fs::path path = dir_ / "dropped.avi";
-  ASSERT_EQ(write_video_with_a_dropped_frame(path, 5), "");
+  std::vector<cv::Mat> frames;
+  for (int i = 1; i <= 10; ++i) frames.emplace_back(48, 64, CV_8UC3, cv::Scalar::all(20 * i));
+  ASSERT_EQ(write_avi_with_a_dropped_frame(path.string(), frames, 5), "");
   const std::unique_ptr<FrameSource> source = open_frame_source(path.string());
   ASSERT_EQ(source->frame_count(), 10);
   cv::Mat frame;

@@ -5,12 +5,14 @@
 #include <fcntl.h>
 #include <gtest/gtest.h>
 #include <signal.h>
+#include <sys/resource.h>
 #include <sys/stat.h>
 #include <sys/sysmacros.h>
 #include <unistd.h>
 
 #include <filesystem>
 #include <fstream>
+#include <opencv2/core.hpp>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -278,17 +280,68 @@ TEST_F(OutputFileTest, AVideoNeedsAContainerExtension) {
 }
 
 TEST_F(OutputFileTest, AVideoIsPublishedWithAllItsFrames) {
+  for (const char* name : {"out.avi", "out.mp4", "out.mkv"}) {
+    SCOPED_TRACE(name);
+    const fs::path path = dir_ / name;
+    {
+      OutputSet outputs;
+      VideoOutput& video = outputs.add_video(path.string(), 10);
+      for (int i = 0; i < 5; ++i) video.write(cv::Mat(48, 64, CV_8UC3, cv::Scalar(i * 40, 0, 0)));
+      EXPECT_FALSE(fs::exists(path));
+      outputs.commit();
+    }
+    cv::VideoCapture check(path.string(), cv::CAP_FFMPEG);
+    EXPECT_EQ(static_cast<int>(check.get(cv::CAP_PROP_FRAME_COUNT)), 5);
+    fs::remove(path);
+  }
+  EXPECT_EQ(count_entries(), 0);
+}
+
+TEST_F(OutputFileTest, AVideoWithoutItsLastFramesFailsTheCommit) {
+  const fs::path path = dir_ / "cut.avi";
+  std::ofstream(dir_ / "results.txt") << "old\n";
+  // Files may not grow beyond 6 KiB (a full disk): the AVI header fits, the frames do not.
+  struct rlimit old_limit {};
+  getrlimit(RLIMIT_FSIZE, &old_limit);
+  struct sigaction ignore {
+  }, old_action{};
+  ignore.sa_handler = SIG_IGN;
+  sigaction(SIGXFSZ, &ignore, &old_action);
+  struct rlimit limit = old_limit;
+  limit.rlim_cur = 6144;
+  ASSERT_EQ(setrlimit(RLIMIT_FSIZE, &limit), 0);
+  std::string message;
+  {
+    OutputSet outputs;
+    outputs.add_file((dir_ / "results.txt").string()).stream() << "new\n";
+    VideoOutput& video = outputs.add_video(path.string(), 10);
+    cv::Mat noise(120, 160, CV_8UC3);
+    for (int i = 0; i < 10; ++i) {
+      cv::randu(noise, 0, 255);
+      video.write(noise);
+    }
+    try {
+      outputs.commit();
+    } catch (const std::runtime_error& e) {
+      message = e.what();
+    }
+  }
+  setrlimit(RLIMIT_FSIZE, &old_limit);
+  sigaction(SIGXFSZ, &old_action, nullptr);
+  EXPECT_NE(message.find("cut.avi: write failed"), std::string::npos) << message;
+  EXPECT_FALSE(fs::exists(path));
+  EXPECT_EQ(read(dir_ / "results.txt"), "old\n");
+  EXPECT_EQ(count_entries(), 1);
+}
+
+TEST_F(OutputFileTest, AnEmptyRunPublishesNoVideo) {
   const fs::path path = dir_ / "out.avi";
   {
     OutputSet outputs;
-    VideoOutput& video = outputs.add_video(path.string(), 10);
-    for (int i = 0; i < 5; ++i) video.write(cv::Mat(48, 64, CV_8UC3, cv::Scalar(i * 40, 0, 0)));
-    EXPECT_FALSE(fs::exists(path));
+    outputs.add_video(path.string(), 10);
     outputs.commit();
   }
-  cv::VideoCapture check(path.string());
-  EXPECT_EQ(static_cast<int>(check.get(cv::CAP_PROP_FRAME_COUNT)), 5);
-  EXPECT_EQ(count_entries(), 1);
+  EXPECT_EQ(count_entries(), 0);
 }
 
 TEST_F(OutputFileTest, AnAbandonedFrameFolderLeavesNothing) {

@@ -1,5 +1,6 @@
 #include "scbt/io/output_set.h"
 
+#include <fcntl.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -30,6 +31,28 @@ int video_fourcc(const std::string& ext) {
   if (ext == ".mp4" || ext == ".m4v") return cv::VideoWriter::fourcc('m', 'p', '4', 'v');
   return 0;
 }
+
+// Sends this process's stderr to /dev/null for its lifetime: FFmpeg prints its decoder's
+// complaints about a cut-off file ("overread") past OpenCV's log level, and the one error line
+// that follows says it all.
+class QuietStderr {
+ public:
+  QuietStderr() : saved_(::dup(STDERR_FILENO)) {
+    const int null = ::open("/dev/null", O_WRONLY | O_CLOEXEC);
+    if (saved_ >= 0 && null >= 0) ::dup2(null, STDERR_FILENO);
+    if (null >= 0) ::close(null);
+  }
+  ~QuietStderr() {
+    if (saved_ < 0) return;
+    ::dup2(saved_, STDERR_FILENO);
+    ::close(saved_);
+  }
+  QuietStderr(const QuietStderr&) = delete;
+  QuietStderr& operator=(const QuietStderr&) = delete;
+
+ private:
+  int saved_;
+};
 
 }  // namespace
 
@@ -86,13 +109,24 @@ void VideoOutput::finish() {
   if (temporary_.empty() || frames_ == 0) return;
   const cv::utils::logging::LogLevel level =
       cv::utils::logging::setLogLevel(cv::utils::logging::LOG_LEVEL_SILENT);
+  const QuietStderr quiet;
+  // The count comes from the header, which is patched last and may be complete when the frames
+  // are not: the last frame must also be there to read.
   cv::VideoCapture check(writer_path_, cv::CAP_FFMPEG);
   const int found = check.isOpened() ? static_cast<int>(check.get(cv::CAP_PROP_FRAME_COUNT)) : 0;
+  cv::Mat last;
+  const bool last_readable = found == frames_ && check.set(cv::CAP_PROP_POS_FRAMES, frames_ - 1) &&
+                             check.read(last) && !last.empty();
   cv::utils::logging::setLogLevel(level);
   if (found != frames_) {
     throw std::runtime_error(printable(target_.path) + ": write failed: the finished video holds " +
                              std::to_string(found) + " of " + std::to_string(frames_) +
                              " frames (disk full?)");
+  }
+  if (!last_readable) {
+    throw std::runtime_error(printable(target_.path) + ": write failed: the finished video's last " +
+                             "frame (" + std::to_string(frames_) +
+                             ") cannot be read back (disk full?)");
   }
 }
 

@@ -94,7 +94,8 @@ void check_no_overwrite(const std::vector<NamedPath>& inputs, const std::vector<
       }
     }
     for (size_t p = 0; p < o; ++p) {
-      if (!out.is_char_device && same(out, output_ids[p])) {
+      const bool both_stdout = outputs[o].path == "-" && outputs[p].path == "-";
+      if (both_stdout || (!out.is_char_device && same(out, output_ids[p]))) {
         refuse(outputs[o], "is the same file as", outputs[p]);
       }
     }
