@@ -1,0 +1,41 @@
+// Between ROS messages and the tracker's types: polygons, boxes, images and the state report.
+#pragma once
+
+#include <geometry_msgs/PolygonStamped.h>
+#include <sensor_msgs/Image.h>
+#include <sensor_msgs/RegionOfInterest.h>
+
+#include <opencv2/core/mat.hpp>
+#include <string>
+
+#include "scbt/geometry/polygon.h"
+
+namespace scbt::ros_node {
+
+// The boundary as a polygon in pixels (z = 0) stamped with the image's header.
+geometry_msgs::PolygonStamped to_polygon_msg(const Polygon& polygon,
+                                             const std_msgs::Header& header);
+
+// The polygon's (x, y) vertices; z is ignored.
+Polygon from_polygon_msg(const geometry_msgs::Polygon& polygon);
+
+// The box's corners (box_polygon). Throws std::invalid_argument for an empty box.
+Polygon from_roi_msg(const sensor_msgs::RegionOfInterest& roi);
+
+// True for the encodings the tracker takes: 8-bit mono8, bgr8, rgb8, bgra8 and rgba8.
+bool is_tracker_encoding(const std::string& encoding);
+
+// The image as an 8-bit grey, BGR or BGRA matrix sharing the message's pixels where it can (mono8,
+// bgr8, bgra8; valid while `image` lives), converted otherwise (rgb8, rgba8). Throws
+// std::invalid_argument for any other encoding or a malformed message (cv_bridge's errors rethrown
+// with the encoding named).
+cv::Mat to_tracker_image(const sensor_msgs::ImageConstPtr& image);
+
+// True for the depth encodings the node takes: 16UC1 (millimetres) and 32FC1 (metres).
+bool is_depth_encoding(const std::string& encoding);
+
+// The depth image in metres (CV_32F, 0 or NaN where unknown). Throws std::invalid_argument for
+// another encoding.
+cv::Mat to_depth_metres(const sensor_msgs::ImageConstPtr& depth);
+
+}  // namespace scbt::ros_node

@@ -1,0 +1,189 @@
+#include "scbt_ros/node_options.h"
+
+#include <ros/node_handle.h>
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+#include "scbt/geometry/polygon_io.h"
+
+namespace scbt::ros_node {
+namespace {
+
+using XmlRpc::XmlRpcValue;
+
+const char* type_name(XmlRpcValue::Type type) {
+  switch (type) {
+    case XmlRpcValue::TypeBoolean:
+      return "a boolean";
+    case XmlRpcValue::TypeInt:
+      return "an integer";
+    case XmlRpcValue::TypeDouble:
+      return "a number";
+    case XmlRpcValue::TypeString:
+      return "a string";
+    case XmlRpcValue::TypeArray:
+      return "a list";
+    case XmlRpcValue::TypeStruct:
+      return "a dictionary";
+    default:
+      return "an unsupported value";
+  }
+}
+
+std::invalid_argument wrong_type(const ros::NodeHandle& node, const std::string& name,
+                                 const char* expected, XmlRpcValue::Type got) {
+  return std::invalid_argument("parameter " + node.resolveName(name) + " must be " + expected +
+                               ", got " + type_name(got));
+}
+
+// Numbers given as integers (`_filter_distance:=20`) are accepted where a double belongs.
+bool to_double(XmlRpcValue& value, double* out) {
+  if (value.getType() == XmlRpcValue::TypeDouble) {
+    *out = static_cast<double>(value);
+    return true;
+  }
+  if (value.getType() == XmlRpcValue::TypeInt) {
+    *out = static_cast<int>(value);
+    return true;
+  }
+  return false;
+}
+
+void read_double(const ros::NodeHandle& node, const std::string& name, double* out) {
+  XmlRpcValue value;
+  if (!node.getParam(name, value)) return;
+  if (!to_double(value, out)) throw wrong_type(node, name, "a number", value.getType());
+  if (!std::isfinite(*out)) {
+    throw std::invalid_argument("parameter " + node.resolveName(name) + " must be finite");
+  }
+}
+
+void read_int(const ros::NodeHandle& node, const std::string& name, int* out) {
+  XmlRpcValue value;
+  if (!node.getParam(name, value)) return;
+  if (value.getType() != XmlRpcValue::TypeInt) {
+    throw wrong_type(node, name, "an integer", value.getType());
+  }
+  *out = static_cast<int>(value);
+}
+
+void read_bool(const ros::NodeHandle& node, const std::string& name, bool* out) {
+  XmlRpcValue value;
+  if (!node.getParam(name, value)) return;
+  if (value.getType() != XmlRpcValue::TypeBoolean) {
+    throw wrong_type(node, name, "true or false", value.getType());
+  }
+  *out = static_cast<bool>(value);
+}
+
+std::optional<std::vector<double>> read_numbers(const ros::NodeHandle& node,
+                                                const std::string& name) {
+  XmlRpcValue value;
+  if (!node.getParam(name, value)) return std::nullopt;
+  if (value.getType() != XmlRpcValue::TypeArray) {
+    throw wrong_type(node, name, "a list of numbers", value.getType());
+  }
+  std::vector<double> numbers(value.size());
+  for (int i = 0; i < value.size(); ++i) {
+    if (!to_double(value[i], &numbers[i]) || !std::isfinite(numbers[i])) {
+      throw std::invalid_argument("parameter " + node.resolveName(name) +
+                                  " must be a list of finite numbers (item " + std::to_string(i) +
+                                  " is not)");
+    }
+  }
+  return numbers;
+}
+
+// The parameters the node reads, without the leading '~'.
+const std::vector<std::string>& known_parameters() {
+  static const std::vector<std::string> names = {
+      "detector", "filter_distance", "min_area_similarity", "cost_tolerance", "recover_by_motion",
+      "seed_stride", "gradient_threshold", "anchor_threshold", "min_line_length", "max_segments",
+      "use_depth", "sync_queue_size", "init_polygon", "init_box",
+      // Read by image_transport: which transport (raw, compressed, ...) to subscribe with.
+      "image_transport"};
+  return names;
+}
+
+}  // namespace
+
+Polygon box_polygon(double x, double y, double width, double height) {
+  if (!(width > 0.0) || !(height > 0.0)) {
+    throw std::invalid_argument("a box needs a positive width and height");
+  }
+  return {{x, y}, {x + width, y}, {x + width, y + height}, {x, y + height}};
+}
+
+void NodeOptions::check() const {
+  tracker.check();
+  if (sync_queue_size < 1) throw std::invalid_argument("sync_queue_size must be at least 1");
+  if (init_polygon) check_boundary_polygon(*init_polygon);
+}
+
+NodeOptions read_node_options(const ros::NodeHandle& node) {
+  NodeOptions options;
+  TrackerOptions& t = options.tracker;
+  std::string detector;
+  if (node.getParam("detector", detector)) {
+    t.detector.kind = parse_line_detector_kind(detector);
+  } else if (node.hasParam("detector")) {
+    throw std::invalid_argument("parameter " + node.resolveName("detector") +
+                                " must be a string (edlines, opencv-edlines, lsd or fld)");
+  }
+  read_double(node, "filter_distance", &t.filter_distance);
+  read_double(node, "min_area_similarity", &t.min_area_similarity);
+  read_double(node, "cost_tolerance", &t.cost_tolerance);
+  read_bool(node, "recover_by_motion", &t.recover_by_motion);
+  read_int(node, "seed_stride", &t.bdsp.seed_stride);
+  read_int(node, "gradient_threshold", &t.detector.gradient_threshold);
+  read_int(node, "anchor_threshold", &t.detector.anchor_threshold);
+  read_double(node, "min_line_length", &t.detector.min_line_length);
+  read_int(node, "max_segments", &t.max_segments);
+  read_bool(node, "use_depth", &options.use_depth);
+  read_int(node, "sync_queue_size", &options.sync_queue_size);
+
+  const auto polygon = read_numbers(node, "init_polygon");
+  const auto box = read_numbers(node, "init_box");
+  if (polygon && box) {
+    throw std::invalid_argument("set either " + node.resolveName("init_polygon") + " or " +
+                                node.resolveName("init_box") + ", not both");
+  }
+  if (polygon) {
+    if (polygon->size() < 6 || polygon->size() % 2 != 0) {
+      throw std::invalid_argument("parameter " + node.resolveName("init_polygon") +
+                                  " must be [x1, y1, x2, y2, x3, y3, ...] (at least 3 points)");
+    }
+    Polygon p;
+    for (size_t i = 0; i < polygon->size(); i += 2)
+      p.emplace_back((*polygon)[i], (*polygon)[i + 1]);
+    options.init_polygon = p;
+  }
+  if (box) {
+    if (box->size() != 4) {
+      throw std::invalid_argument("parameter " + node.resolveName("init_box") +
+                                  " must be [x, y, width, height]");
+    }
+    options.init_polygon = box_polygon((*box)[0], (*box)[1], (*box)[2], (*box)[3]);
+  }
+  options.check();
+  return options;
+}
+
+std::vector<std::string> unknown_parameters(const ros::NodeHandle& node) {
+  std::vector<std::string> all;
+  std::vector<std::string> unknown;
+  if (!node.getParamNames(all)) return unknown;
+  const std::string prefix = node.getNamespace() + "/";
+  for (const std::string& name : all) {
+    if (name.rfind(prefix, 0) != 0) continue;
+    const std::string local = name.substr(prefix.size());
+    const std::string head = local.substr(0, local.find('/'));
+    const auto& known = known_parameters();
+    if (std::find(known.begin(), known.end(), head) == known.end()) unknown.push_back(name);
+  }
+  return unknown;
+}
+
+}  // namespace scbt::ros_node

@@ -1,0 +1,46 @@
+// The node's settings, read from its private ROS parameters (`~filter_distance`, ...): the tracker
+// options under the CLI's names (dashes become underscores, which ROS names cannot contain) and
+// defaults, plus how the node is wired and initialised.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "scbt/geometry/polygon.h"
+#include "scbt/tracker/tracker_options.h"
+
+namespace ros {
+class NodeHandle;
+}
+
+namespace scbt::ros_node {
+
+struct NodeOptions {
+  TrackerOptions tracker;
+  // Subscribe to `depth` and `camera_info` too, synchronised with `image`, and publish the
+  // boundary's 3-D centroid and normal.
+  bool use_depth = false;
+  // Messages the synchroniser keeps per topic while matching stamps (ApproximateTime).
+  int sync_queue_size = 10;
+  // The initial boundary from `~init_polygon` [x1, y1, x2, y2, ...] or `~init_box` [x, y, w, h]
+  // (pixels); applied to the first frame that arrives.
+  std::optional<Polygon> init_polygon;
+
+  // Throws std::invalid_argument naming the first bad value.
+  void check() const;
+};
+
+// Reads the private parameters of `private_node`. Throws std::invalid_argument naming the
+// parameter for a wrong type (a string where a number belongs, ...), an unknown detector name,
+// a malformed polygon or box, or an option out of range.
+NodeOptions read_node_options(const ros::NodeHandle& private_node);
+
+// Private parameters that are set but that the node does not know (likely typos).
+std::vector<std::string> unknown_parameters(const ros::NodeHandle& private_node);
+
+// The four corners of the axis-aligned box (x, y, width, height), clockwise as drawn.
+// Throws std::invalid_argument for a non-positive width or height.
+Polygon box_polygon(double x, double y, double width, double height);
+
+}  // namespace scbt::ros_node

@@ -1,0 +1,44 @@
+#include "scbt_ros/state_report.h"
+
+#include <nlohmann/json.hpp>
+
+namespace scbt::ros_node {
+
+std::string to_string(FrameEvent event) {
+  switch (event) {
+    case FrameEvent::kWaiting:
+      return "waiting_for_init";
+    case FrameEvent::kInitialised:
+      return "initialised";
+    case FrameEvent::kTracked:
+      return "tracked";
+    case FrameEvent::kFailed:
+      return "failed";
+  }
+  return "unknown";
+}
+
+std::string state_json(const FrameReport& report) {
+  nlohmann::json out;
+  out["event"] = to_string(report.event);
+  out["frame"] = report.frame;
+  out["dropped_frames"] = report.dropped_total;
+  out["dropped_since_last"] = report.dropped_since_last;
+  nlohmann::json timings;
+  timings["latency"] = report.latency_ms;
+  if (const TrackResult* r = report.result) {
+    out["held"] = r->held;
+    out["recovered"] = r->recovered;
+    out["cost"] = r->cost;
+    out["area_similarity"] = r->area_similarity;
+    timings["line"] = r->line_ms;
+    timings["grouping"] = r->grouping_ms;
+    timings["total"] = r->total_ms();
+  } else if (report.event == FrameEvent::kInitialised) {
+    out["held"] = false;
+  }
+  out["timings_ms"] = timings;
+  return out.dump();
+}
+
+}  // namespace scbt::ros_node

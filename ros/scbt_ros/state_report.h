@@ -1,0 +1,33 @@
+// The `~state` message: one JSON object per frame (std_msgs/String), so that any ROS tool or
+// language reads it without a custom message package.
+#pragma once
+
+#include <cstdint>
+#include <string>
+
+#include "scbt/tracker/tracker.h"
+
+namespace scbt::ros_node {
+
+enum class FrameEvent {
+  kWaiting,      // no initial boundary yet: nothing tracked
+  kInitialised,  // the frame the (re-)initialisation was applied to: boundary = the given polygon
+  kTracked,      // tracked from the previous frame
+  kFailed,       // the tracker rejected the frame (see the log): nothing published on ~boundary
+};
+
+std::string to_string(FrameEvent event);
+
+struct FrameReport {
+  FrameEvent event = FrameEvent::kWaiting;
+  std::uint64_t frame = 0;          // frames taken by the worker so far, this one included
+  std::uint64_t dropped_total = 0;  // frames replaced by a newer one before they were tracked
+  std::uint64_t dropped_since_last = 0;
+  double latency_ms = 0.0;              // from the callback receiving the frame to publishing it
+  const TrackResult* result = nullptr;  // kTracked only
+};
+
+// {"event": ..., "frame": ..., "held": ..., "timings_ms": {...}, "dropped_frames": ...}.
+std::string state_json(const FrameReport& report);
+
+}  // namespace scbt::ros_node

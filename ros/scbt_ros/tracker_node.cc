@@ -1,0 +1,168 @@
+#include "scbt_ros/tracker_node.h"
+
+#include <geometry_msgs/PointStamped.h>
+#include <geometry_msgs/Vector3Stamped.h>
+#include <std_msgs/String.h>
+
+#include <exception>
+#include <utility>
+
+#include "scbt_ros/conversions.h"
+
+namespace scbt::ros_node {
+
+TrackerNode::TrackerNode(const ros::NodeHandle& node, const ros::NodeHandle& private_node,
+                         const NodeOptions& options)
+    : options_(options),
+      node_(node),
+      private_node_(private_node),
+      transport_(node),
+      tracker_(options.tracker) {
+  boundary_publisher_ = private_node_.advertise<geometry_msgs::PolygonStamped>("boundary", 10);
+  state_publisher_ = private_node_.advertise<std_msgs::String>("state", 10);
+  // The callback only checks and hands over, so a short queue loses nothing: frames the tracker
+  // cannot keep up with are dropped (and counted) in `frames_`, not here.
+  constexpr uint32_t kQueue = 10;
+  if (options_.use_depth) {
+    centroid_publisher_ = private_node_.advertise<geometry_msgs::PointStamped>("centroid", 10);
+    normal_publisher_ = private_node_.advertise<geometry_msgs::Vector3Stamped>("normal", 10);
+    image_filter_.subscribe(transport_, "image", kQueue);
+    depth_filter_.subscribe(transport_, "depth", kQueue);
+    camera_info_filter_.subscribe(node_, "camera_info", kQueue);
+    synchronizer_ = std::make_unique<message_filters::Synchronizer<SyncPolicy>>(
+        SyncPolicy(options_.sync_queue_size), image_filter_, depth_filter_, camera_info_filter_);
+    synchronizer_->registerCallback(&TrackerNode::on_image_and_depth, this);
+  } else {
+    image_subscriber_ = transport_.subscribe("image", kQueue, &TrackerNode::on_image, this);
+  }
+  init_subscriber_ = private_node_.subscribe("init", 1, &TrackerNode::on_init, this);
+  init_box_subscriber_ = private_node_.subscribe("init_box", 1, &TrackerNode::on_init_box, this);
+  if (options_.init_polygon) request_init(*options_.init_polygon, "parameter");
+  worker_ = std::thread([this] { run_worker(); });
+}
+
+TrackerNode::~TrackerNode() {
+  frames_.close();
+  if (worker_.joinable()) worker_.join();
+}
+
+void TrackerNode::on_image(const sensor_msgs::ImageConstPtr& image) {
+  if (!is_tracker_encoding(image->encoding)) {
+    ROS_ERROR_STREAM_THROTTLE(5.0, "scbt: image on " << image_subscriber_.getTopic()
+                                                     << " has encoding '" << image->encoding
+                                                     << "'; expected mono8, bgr8, rgb8, bgra8 or "
+                                                        "rgba8 (frame skipped)");
+    return;
+  }
+  frames_.put(Frame{image, nullptr, nullptr, ros::WallTime::now()});
+}
+
+void TrackerNode::on_image_and_depth(const sensor_msgs::ImageConstPtr& image,
+                                     const sensor_msgs::ImageConstPtr& depth,
+                                     const sensor_msgs::CameraInfoConstPtr& camera_info) {
+  if (!is_tracker_encoding(image->encoding)) {
+    ROS_ERROR_STREAM_THROTTLE(5.0, "scbt: image on " << image_filter_.getTopic()
+                                                     << " has encoding '" << image->encoding
+                                                     << "'; expected mono8, bgr8, rgb8, bgra8 or "
+                                                        "rgba8 (frame skipped)");
+    return;
+  }
+  if (!is_depth_encoding(depth->encoding)) {
+    ROS_ERROR_STREAM_THROTTLE(5.0, "scbt: depth on " << depth_filter_.getTopic()
+                                                     << " has encoding '" << depth->encoding
+                                                     << "'; expected 16UC1 (mm) or 32FC1 (m) "
+                                                        "(frame skipped)");
+    return;
+  }
+  if (depth->width != image->width || depth->height != image->height) {
+    ROS_ERROR_STREAM_THROTTLE(5.0, "scbt: depth is " << depth->width << "x" << depth->height
+                                                     << " but the image is " << image->width << "x"
+                                                     << image->height
+                                                     << "; register depth to the colour camera "
+                                                        "(frame skipped)");
+    return;
+  }
+  frames_.put(Frame{image, depth, camera_info, ros::WallTime::now()});
+}
+
+void TrackerNode::on_init(const geometry_msgs::PolygonStampedConstPtr& polygon) {
+  request_init(from_polygon_msg(polygon->polygon), init_subscriber_.getTopic());
+}
+
+void TrackerNode::on_init_box(const sensor_msgs::RegionOfInterestConstPtr& box) {
+  try {
+    request_init(from_roi_msg(*box), init_box_subscriber_.getTopic());
+  } catch (const std::exception& e) {
+    ROS_ERROR_STREAM("scbt: box on " << init_box_subscriber_.getTopic()
+                                     << " ignored: " << e.what());
+  }
+}
+
+void TrackerNode::request_init(Polygon polygon, const std::string& source) {
+  std::lock_guard<std::mutex> lock(init_mutex_);
+  pending_init_ = PendingInit{std::move(polygon), source};
+}
+
+void TrackerNode::run_worker() {
+  while (std::optional<Frame> frame = frames_.take()) {
+    try {
+      process(*frame);
+    } catch (const std::exception& e) {
+      // A frame the tracker cannot take (e.g. another size than the one it was initialised on).
+      ROS_ERROR_STREAM_THROTTLE(
+          5.0, "scbt: frame " << frame->image->header.seq << " not tracked: " << e.what());
+      publish_state(*frame, FrameReport{FrameEvent::kFailed});
+    }
+  }
+}
+
+void TrackerNode::process(const Frame& frame) {
+  ++frames_taken_;
+  const cv::Mat image = to_tracker_image(frame.image);
+  std::optional<PendingInit> init;
+  {
+    std::lock_guard<std::mutex> lock(init_mutex_);
+    std::swap(init, pending_init_);
+  }
+  if (init) {
+    bool applied = false;
+    try {
+      tracker_.init(image, init->polygon);
+      applied = true;
+    } catch (const std::exception& e) {
+      // The tracker keeps the boundary it had, if any.
+      ROS_ERROR_STREAM("scbt: initial boundary from " << init->source << " rejected: " << e.what());
+    }
+    if (applied) {
+      ROS_INFO_STREAM("scbt: initialised from " << init->source << " with " << init->polygon.size()
+                                                << " vertices");
+      boundary_publisher_.publish(to_polygon_msg(tracker_.boundary(), frame.image->header));
+      publish_state(frame, FrameReport{FrameEvent::kInitialised});
+      return;
+    }
+  }
+  if (!tracker_.initialized()) {
+    ROS_INFO_THROTTLE(10.0, "scbt: waiting for an initial boundary on ~init or ~init_box");
+    publish_state(frame, FrameReport{FrameEvent::kWaiting});
+    return;
+  }
+  const TrackResult result = tracker_.track(image);
+  boundary_publisher_.publish(to_polygon_msg(result.boundary, frame.image->header));
+  FrameReport report{FrameEvent::kTracked};
+  report.result = &result;
+  publish_state(frame, report);
+}
+
+void TrackerNode::publish_state(const Frame& frame, const FrameReport& partial) {
+  FrameReport report = partial;
+  report.frame = frames_taken_;
+  report.dropped_total = frames_.dropped();
+  report.dropped_since_last = report.dropped_total - dropped_reported_;
+  dropped_reported_ = report.dropped_total;
+  report.latency_ms = (ros::WallTime::now() - frame.received).toSec() * 1e3;
+  std_msgs::String msg;
+  msg.data = state_json(report);
+  state_publisher_.publish(msg);
+}
+
+}  // namespace scbt::ros_node
