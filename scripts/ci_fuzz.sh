@@ -7,7 +7,7 @@ cd "$(dirname "$0")/.."
 build=${SCBT_FUZZ_BUILD:-build-fuzz}
 seconds=${SCBT_FUZZ_SECONDS:-60}
 CXX=clang++ cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=Debug -DSCBT_BUILD_FUZZERS=ON \
-  -DSCBT_BUILD_TESTS=OFF -DSCBT_BUILD_PYTHON=OFF \
+  -DSCBT_BUILD_TESTS=OFF -DSCBT_BUILD_PYTHON=OFF -DSCBT_BUILD_ROS=OFF \
   -DCMAKE_CXX_FLAGS_DEBUG="-O1 -g -fno-omit-frame-pointer -fsanitize=fuzzer-no-link,address,undefined" \
   >/dev/null
 cmake --build "$build" -j2 --target fuzz_polygon_parser fuzz_tracker

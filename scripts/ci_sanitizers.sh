@@ -6,7 +6,7 @@ cd "$(dirname "$0")/.."
 build=${SCBT_ASAN_BUILD:-build-asan}
 flags="-O1 -g -fno-omit-frame-pointer -fsanitize=address,undefined -fno-sanitize-recover=undefined"
 cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=Debug -DCMAKE_CXX_FLAGS_DEBUG="$flags" \
-  -DCMAKE_EXE_LINKER_FLAGS="-fsanitize=address,undefined" -DSCBT_BUILD_PYTHON=OFF >/dev/null
+  -DCMAKE_EXE_LINKER_FLAGS="-fsanitize=address,undefined" -DSCBT_BUILD_PYTHON=OFF -DSCBT_BUILD_ROS=OFF >/dev/null
 cmake --build "$build" -j2
 export ASAN_OPTIONS=detect_leaks=1:halt_on_error=1
 export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
