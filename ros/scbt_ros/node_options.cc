@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <sstream>
 #include <stdexcept>
 
 #include "scbt/geometry/polygon_io.h"
@@ -78,10 +79,41 @@ void read_bool(const ros::NodeHandle& node, const std::string& name, bool* out) 
   *out = static_cast<bool>(value);
 }
 
+// "[1, 2.5, 3]" or "1 2.5 3" as numbers.
+std::vector<double> parse_numbers(const std::string& name, std::string text) {
+  const size_t open = text.find_first_not_of(" \t");
+  const size_t close = text.find_last_not_of(" \t");
+  if (open != std::string::npos && text[open] == '[' && text[close] == ']') {
+    text = text.substr(open + 1, close - open - 1);
+  }
+  std::replace(text.begin(), text.end(), ',', ' ');
+  std::istringstream in(text);
+  std::vector<double> numbers;
+  std::string token;
+  while (in >> token) {
+    size_t used = 0;
+    double x = 0.0;
+    try {
+      x = std::stod(token, &used);
+    } catch (const std::exception&) {
+    }
+    if (used != token.size() || !std::isfinite(x)) {
+      throw std::invalid_argument("parameter " + name + " must be a list of numbers, got '" +
+                                  token + "' in it");
+    }
+    numbers.push_back(x);
+  }
+  return numbers;
+}
+
 std::optional<std::vector<double>> read_numbers(const ros::NodeHandle& node,
                                                 const std::string& name) {
   XmlRpcValue value;
   if (!node.getParam(name, value)) return std::nullopt;
+  // roscpp keeps a command-line `_init_box:=[1, 2, 3, 4]` as a string: parse it as the list.
+  if (value.getType() == XmlRpcValue::TypeString) {
+    return parse_numbers(node.resolveName(name), static_cast<std::string>(value));
+  }
   if (value.getType() != XmlRpcValue::TypeArray) {
     throw wrong_type(node, name, "a list of numbers", value.getType());
   }

@@ -23,11 +23,13 @@ struct FrameReport {
   std::uint64_t frame = 0;          // frames taken by the worker so far, this one included
   std::uint64_t dropped_total = 0;  // frames replaced by a newer one before they were tracked
   std::uint64_t dropped_since_last = 0;
+  std::uint64_t missed_total = 0;       // gaps in the images' header.seq: lost before the node
   double latency_ms = 0.0;              // from the callback receiving the frame to publishing it
   const TrackResult* result = nullptr;  // kTracked only
 };
 
-// {"event": ..., "frame": ..., "held": ..., "timings_ms": {...}, "dropped_frames": ...}.
+// {"event": ..., "frame": ..., "held": ..., "timings_ms": {...}, "dropped_frames": ...,
+// "missed_frames": ...}.
 std::string state_json(const FrameReport& report);
 
 }  // namespace scbt::ros_node

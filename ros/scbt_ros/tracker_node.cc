@@ -46,7 +46,16 @@ TrackerNode::~TrackerNode() {
   if (worker_.joinable()) worker_.join();
 }
 
+void TrackerNode::note_sequence(std::uint32_t seq) {
+  // A smaller number is a restarted or second publisher, not a loss.
+  if (last_seq_ && std::uint64_t{seq} > std::uint64_t{*last_seq_} + 1) {
+    missed_ += seq - *last_seq_ - 1;
+  }
+  last_seq_ = seq;
+}
+
 void TrackerNode::on_image(const sensor_msgs::ImageConstPtr& image) {
+  note_sequence(image->header.seq);
   if (!is_tracker_encoding(image->encoding)) {
     ROS_ERROR_STREAM_THROTTLE(5.0, "scbt: image on " << image_subscriber_.getTopic()
                                                      << " has encoding '" << image->encoding
@@ -60,6 +69,7 @@ void TrackerNode::on_image(const sensor_msgs::ImageConstPtr& image) {
 void TrackerNode::on_image_and_depth(const sensor_msgs::ImageConstPtr& image,
                                      const sensor_msgs::ImageConstPtr& depth,
                                      const sensor_msgs::CameraInfoConstPtr& camera_info) {
+  note_sequence(image->header.seq);
   if (!is_tracker_encoding(image->encoding)) {
     ROS_ERROR_STREAM_THROTTLE(5.0, "scbt: image on " << image_filter_.getTopic()
                                                      << " has encoding '" << image->encoding
@@ -159,6 +169,7 @@ void TrackerNode::publish_state(const Frame& frame, const FrameReport& partial) 
   report.dropped_total = frames_.dropped();
   report.dropped_since_last = report.dropped_total - dropped_reported_;
   dropped_reported_ = report.dropped_total;
+  report.missed_total = missed_;
   report.latency_ms = (ros::WallTime::now() - frame.received).toSec() * 1e3;
   std_msgs::String msg;
   msg.data = state_json(report);

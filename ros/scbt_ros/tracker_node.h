@@ -14,6 +14,7 @@
 #include <sensor_msgs/Image.h>
 #include <sensor_msgs/RegionOfInterest.h>
 
+#include <atomic>
 #include <cstdint>
 #include <memory>
 #include <mutex>
@@ -57,6 +58,8 @@ class TrackerNode {
   void on_init(const geometry_msgs::PolygonStampedConstPtr& polygon);
   void on_init_box(const sensor_msgs::RegionOfInterestConstPtr& box);
   void request_init(Polygon polygon, const std::string& source);
+  // Counts the images missing between this one's header.seq and the previous one's.
+  void note_sequence(std::uint32_t seq);
 
   void run_worker();
   void process(const Frame& frame);
@@ -83,6 +86,10 @@ class TrackerNode {
   ros::Publisher normal_publisher_;
 
   LatestSlot<Frame> frames_;
+  // Images that never reached the callback (ROS's subscriber queue overflowed, or upstream), seen
+  // as gaps in header.seq. The callbacks' own (one spinner thread); the worker reads the count.
+  std::optional<std::uint32_t> last_seq_;
+  std::atomic<std::uint64_t> missed_{0};
   std::mutex init_mutex_;
   std::optional<PendingInit> pending_init_;
 

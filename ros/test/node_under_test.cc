@@ -1,0 +1,89 @@
+#include "node_under_test.h"
+
+#include <std_msgs/String.h>
+
+#include <boost/make_shared.hpp>
+
+#include "scbt_ros/conversions.h"
+
+namespace scbt::ros_test {
+
+std::string g_node_path;
+std::string g_log_folder;
+
+using std::chrono::milliseconds;
+
+std::vector<SceneFrame> render_test_clip(SceneShape shape, std::uint32_t seed, int frames,
+                                         int period) {
+  SceneOptions scene;
+  scene.shape = shape;
+  scene.seed = seed;
+  MotionOptions motion;
+  motion.period = period;
+  return render_clip(scene, smooth_motion_path(motion, frames));
+}
+
+sensor_msgs::ImagePtr to_image_msg(const cv::Mat& image, const std::string& encoding,
+                                   const ros::Time& stamp, std::uint32_t seq) {
+  auto msg = boost::make_shared<sensor_msgs::Image>();
+  msg->header.stamp = stamp;
+  msg->header.seq = seq;
+  msg->header.frame_id = "scbt_test_camera";
+  msg->height = image.rows;
+  msg->width = image.cols;
+  msg->encoding = encoding;
+  msg->step = image.cols * image.elemSize();
+  msg->data.assign(image.data, image.data + image.total() * image.elemSize());
+  return msg;
+}
+
+std::vector<double> flatten(const Polygon& polygon) {
+  std::vector<double> out;
+  for (const Point& p : polygon) {
+    out.push_back(p.x);
+    out.push_back(p.y);
+  }
+  return out;
+}
+
+ros::Time stamp_of(int k) { return ros::Time(1000.0 + k / 30.0); }
+
+NodeUnderTest::NodeUnderTest(const std::string& name, const std::vector<std::string>& extra_args)
+    : name_(name) {
+  ros::NodeHandle nh;
+  image_ = nh.advertise<sensor_msgs::Image>("/" + name + "/image", 200);
+  init_ = nh.advertise<geometry_msgs::PolygonStamped>("/" + name + "/init", 1);
+  boundary_ = nh.subscribe<geometry_msgs::PolygonStamped>(
+      "/" + name + "/boundary", 200,
+      [this](const geometry_msgs::PolygonStampedConstPtr& m) { boundaries.push(*m); });
+  state_ = nh.subscribe<std_msgs::String>(
+      "/" + name + "/state", 200,
+      [this](const std_msgs::StringConstPtr& m) { states.push(nlohmann::json::parse(m->data)); });
+  std::vector<std::string> argv = {g_node_path, "__name:=" + name, "image:=/" + name + "/image"};
+  argv.insert(argv.end(), extra_args.begin(), extra_args.end());
+  process = ChildProcess(argv, g_log_folder + "/" + name + ".log");
+}
+
+::testing::AssertionResult NodeUnderTest::connected() {
+  const bool ok = wait_until(
+      [this] {
+        return image_.getNumSubscribers() > 0 && boundary_.getNumPublishers() > 0 &&
+               state_.getNumPublishers() > 0;
+      },
+      milliseconds(20000));
+  if (ok) return ::testing::AssertionSuccess();
+  return ::testing::AssertionFailure() << name_ << " did not connect; its log:\n" << process.log();
+}
+
+void NodeUnderTest::publish(const cv::Mat& image, const ros::Time& stamp,
+                            const std::string& encoding) {
+  image_.publish(to_image_msg(image, encoding, stamp, next_seq_++));
+}
+
+void NodeUnderTest::publish_init(const Polygon& polygon) {
+  std_msgs::Header header;
+  header.stamp = ros::Time::now();
+  init_.publish(ros_node::to_polygon_msg(polygon, header));
+}
+
+}  // namespace scbt::ros_test
