@@ -3,6 +3,7 @@
 #include <cv_bridge/cv_bridge.h>
 #include <sensor_msgs/image_encodings.h>
 
+#include <algorithm>
 #include <stdexcept>
 
 #include "scbt_ros/node_options.h"
@@ -62,21 +63,41 @@ bool is_depth_encoding(const std::string& encoding) {
   return encoding == enc::TYPE_16UC1 || encoding == enc::TYPE_32FC1;
 }
 
-cv::Mat to_depth_metres(const sensor_msgs::ImageConstPtr& depth) {
+cv::Mat to_depth_image(const sensor_msgs::ImageConstPtr& depth) {
   if (!is_depth_encoding(depth->encoding)) {
     throw std::invalid_argument("depth encoding '" + depth->encoding +
                                 "' is not supported: expected 16UC1 (mm) or 32FC1 (m)");
   }
-  cv_bridge::CvImageConstPtr shared;
   try {
-    shared = cv_bridge::toCvShare(depth, depth->encoding);
+    return cv_bridge::toCvShare(depth, depth->encoding)->image;
   } catch (const cv_bridge::Exception& e) {
     throw std::invalid_argument("depth image (" + depth->encoding + ") is malformed: " + e.what());
   }
-  if (depth->encoding == enc::TYPE_32FC1) return shared->image;
-  cv::Mat metres;
-  shared->image.convertTo(metres, CV_32F, 0.001);  // REP 118: 16UC1 depth is in millimetres
-  return metres;
+}
+
+PinholeIntrinsics from_camera_info_msg(const sensor_msgs::CameraInfo& info) {
+  if (info.K[0] == 0.0 || info.K[4] == 0.0) {
+    throw std::invalid_argument("camera_info has no intrinsics (K is zero): camera not calibrated");
+  }
+  if (info.binning_x > 1 || info.binning_y > 1 || info.roi.width != 0 || info.roi.height != 0) {
+    throw std::invalid_argument(
+        "camera_info with binning or a region of interest is not supported");
+  }
+  PinholeIntrinsics camera;
+  camera.fx = info.K[0];
+  camera.fy = info.K[4];
+  camera.cx = info.K[2];
+  camera.cy = info.K[5];
+  const bool zero = std::all_of(info.D.begin(), info.D.end(), [](double d) { return d == 0.0; });
+  if (!zero) {
+    if (info.distortion_model != "plumb_bob" && info.distortion_model != "rational_polynomial") {
+      throw std::invalid_argument("camera_info distortion model '" + info.distortion_model +
+                                  "' is not supported: expected plumb_bob or rational_polynomial");
+    }
+    camera.distortion = info.D;
+  }
+  camera.check();
+  return camera;
 }
 
 }  // namespace scbt::ros_node

@@ -2,12 +2,14 @@
 #pragma once
 
 #include <geometry_msgs/PolygonStamped.h>
+#include <sensor_msgs/CameraInfo.h>
 #include <sensor_msgs/Image.h>
 #include <sensor_msgs/RegionOfInterest.h>
 
 #include <opencv2/core/mat.hpp>
 #include <string>
 
+#include "scbt/depth/pinhole_camera.h"
 #include "scbt/geometry/polygon.h"
 
 namespace scbt::ros_node {
@@ -31,11 +33,16 @@ bool is_tracker_encoding(const std::string& encoding);
 // with the encoding named).
 cv::Mat to_tracker_image(const sensor_msgs::ImageConstPtr& image);
 
-// True for the depth encodings the node takes: 16UC1 (millimetres) and 32FC1 (metres).
+// True for the depth encodings the node takes (REP 118): 16UC1 (millimetres) and 32FC1 (metres).
 bool is_depth_encoding(const std::string& encoding);
 
-// The depth image in metres (CV_32F, 0 or NaN where unknown). Throws std::invalid_argument for
-// another encoding.
-cv::Mat to_depth_metres(const sensor_msgs::ImageConstPtr& depth);
+// The depth image as it is (CV_16UC1 or CV_32FC1, shared with the message: valid while `depth`
+// lives). Throws std::invalid_argument for another encoding or a malformed message.
+cv::Mat to_depth_image(const sensor_msgs::ImageConstPtr& depth);
+
+// The camera's intrinsics and lens distortion (plumb_bob or rational_polynomial, or none).
+// Throws std::invalid_argument for an uncalibrated camera (K all zero), another distortion model,
+// binning or a region of interest (not supported).
+PinholeIntrinsics from_camera_info_msg(const sensor_msgs::CameraInfo& info);
 
 }  // namespace scbt::ros_node

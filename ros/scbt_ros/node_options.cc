@@ -150,6 +150,7 @@ Polygon box_polygon(double x, double y, double width, double height) {
 
 void NodeOptions::check() const {
   tracker.check();
+  depth.check();
   if (sync_queue_size < 1) throw std::invalid_argument("sync_queue_size must be at least 1");
   if (init_polygon) check_boundary_polygon(*init_polygon);
 }
@@ -174,6 +175,8 @@ NodeOptions read_node_options(const ros::NodeHandle& node) {
   read_double(node, "min_line_length", &t.detector.min_line_length);
   read_int(node, "max_segments", &t.max_segments);
   read_bool(node, "use_depth", &options.use_depth);
+  read_double(node, "min_depth", &options.depth.min_depth);
+  read_double(node, "max_depth", &options.depth.max_depth);
   read_int(node, "sync_queue_size", &options.sync_queue_size);
 
   const auto polygon = read_numbers(node, "init_polygon");

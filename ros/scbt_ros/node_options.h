@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "scbt/depth/depth_options.h"
 #include "scbt/geometry/polygon.h"
 #include "scbt/tracker/tracker_options.h"
 
@@ -21,6 +22,8 @@ struct NodeOptions {
   // Subscribe to `depth` and `camera_info` too, synchronised with `image`, and publish the
   // boundary's 3-D centroid and normal.
   bool use_depth = false;
+  // How the boundary is lifted to 3-D with depth (~min_depth, ~max_depth in metres).
+  DepthOptions depth;
   // Messages the synchroniser keeps per topic while matching stamps (ApproximateTime).
   int sync_queue_size = 10;
   // The initial boundary from `~init_polygon` [x1, y1, x2, y2, ...] or `~init_box` [x, y, w, h]

@@ -38,6 +38,16 @@ std::string state_json(const FrameReport& report) {
   } else if (report.event == FrameEvent::kInitialised) {
     out["held"] = false;
   }
+  if (const Boundary3d* b = report.boundary_3d) {
+    nlohmann::json depth;
+    depth["valid"] = b->valid;
+    depth["samples"] = b->n_samples;
+    depth["samples_with_depth"] = b->n_valid;
+    depth["plane_rms_m"] = b->rms;
+    if (b->circle.found) depth["circle_radius_m"] = b->circle.radius;
+    out["depth"] = depth;
+    timings["depth"] = report.depth_ms;
+  }
   out["timings_ms"] = timings;
   return out.dump();
 }

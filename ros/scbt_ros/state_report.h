@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <string>
 
+#include "scbt/depth/boundary_3d.h"
 #include "scbt/tracker/tracker.h"
 
 namespace scbt::ros_node {
@@ -26,6 +27,8 @@ struct FrameReport {
   std::uint64_t missed_total = 0;       // gaps in the images' header.seq: lost before the node
   double latency_ms = 0.0;              // from the callback receiving the frame to publishing it
   const TrackResult* result = nullptr;  // kTracked only
+  const Boundary3d* boundary_3d = nullptr;  // with depth
+  double depth_ms = 0.0;                    // the lift to 3-D
 };
 
 // {"event": ..., "frame": ..., "held": ..., "timings_ms": {...}, "dropped_frames": ...,

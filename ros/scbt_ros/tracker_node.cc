@@ -160,7 +160,40 @@ void TrackerNode::process(const Frame& frame) {
   boundary_publisher_.publish(to_polygon_msg(result.boundary, frame.image->header));
   FrameReport report{FrameEvent::kTracked};
   report.result = &result;
+  std::optional<Boundary3d> lifted;
+  if (frame.depth) {
+    const auto start = ros::WallTime::now();
+    lifted = lift_to_3d(frame, result.boundary);
+    report.depth_ms = (ros::WallTime::now() - start).toSec() * 1e3;
+    report.boundary_3d = &*lifted;
+  }
   publish_state(frame, report);
+}
+
+Boundary3d TrackerNode::lift_to_3d(const Frame& frame, const Polygon& boundary) {
+  const Boundary3d lifted =
+      lift_boundary_to_3d(boundary, to_depth_image(frame.depth),
+                          from_camera_info_msg(*frame.camera_info), options_.depth);
+  if (!lifted.valid) {
+    ROS_WARN_STREAM_THROTTLE(5.0, "scbt: too little depth along the boundary ("
+                                      << lifted.n_valid << " of " << lifted.n_samples
+                                      << " samples): no centroid or normal published");
+    return lifted;
+  }
+  // Depth registered to the colour image shares its frame: the image's header stamps both.
+  geometry_msgs::PointStamped centroid;
+  centroid.header = frame.image->header;
+  centroid.point.x = lifted.centroid.x();
+  centroid.point.y = lifted.centroid.y();
+  centroid.point.z = lifted.centroid.z();
+  centroid_publisher_.publish(centroid);
+  geometry_msgs::Vector3Stamped normal;
+  normal.header = frame.image->header;
+  normal.vector.x = lifted.normal.x();
+  normal.vector.y = lifted.normal.y();
+  normal.vector.z = lifted.normal.z();
+  normal_publisher_.publish(normal);
+  return lifted;
 }
 
 void TrackerNode::publish_state(const Frame& frame, const FrameReport& partial) {

@@ -22,6 +22,7 @@
 #include <string>
 #include <thread>
 
+#include "scbt/depth/boundary_3d.h"
 #include "scbt/tracker/tracker.h"
 #include "scbt_ros/latest_slot.h"
 #include "scbt_ros/node_options.h"
@@ -64,6 +65,8 @@ class TrackerNode {
   void run_worker();
   void process(const Frame& frame);
   void publish_state(const Frame& frame, const FrameReport& report);
+  // The boundary on the frame's depth: publishes ~centroid and ~normal when it is valid.
+  Boundary3d lift_to_3d(const Frame& frame, const Polygon& boundary);
 
   NodeOptions options_;
   ros::NodeHandle node_;

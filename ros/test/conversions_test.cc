@@ -71,15 +71,40 @@ TEST(Conversions, OtherEncodingsAreRefusedByName) {
   EXPECT_THROW(to_tracker_image(truncated), std::invalid_argument);
 }
 
-TEST(Conversions, DepthMillimetresBecomeMetres) {
-  const cv::Mat mm(2, 2, CV_16UC1, cv::Scalar(1500));
-  const cv::Mat m = to_depth_metres(image_msg(mm, enc::TYPE_16UC1));
-  ASSERT_EQ(m.type(), CV_32FC1);
-  EXPECT_FLOAT_EQ(m.at<float>(1, 1), 1.5f);
-  const cv::Mat f(2, 2, CV_32FC1, cv::Scalar(0.75));
-  EXPECT_FLOAT_EQ(to_depth_metres(image_msg(f, enc::TYPE_32FC1)).at<float>(0, 1), 0.75f);
-  EXPECT_THROW(to_depth_metres(image_msg(cv::Mat(2, 2, CV_8UC1), enc::MONO8)),
-               std::invalid_argument);
+TEST(Conversions, DepthIsTakenAsItIsInEitherEncoding) {
+  // The result shares the message's pixels: the message must outlive it.
+  const auto mm = image_msg(cv::Mat(2, 2, CV_16UC1, cv::Scalar(1500)), enc::TYPE_16UC1);
+  const cv::Mat shared = to_depth_image(mm);
+  ASSERT_EQ(shared.type(), CV_16UC1);
+  EXPECT_EQ(shared.at<std::uint16_t>(1, 1), 1500);
+  EXPECT_EQ(shared.data, mm->data.data());
+  const auto metres = image_msg(cv::Mat(2, 2, CV_32FC1, cv::Scalar(0.75)), enc::TYPE_32FC1);
+  EXPECT_FLOAT_EQ(to_depth_image(metres).at<float>(0, 1), 0.75f);
+  try {
+    to_depth_image(image_msg(cv::Mat(2, 2, CV_8UC1), enc::MONO8));
+    FAIL() << "mono8 depth accepted";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("mono8"), std::string::npos) << e.what();
+  }
+}
+
+TEST(Conversions, CameraInfoGivesIntrinsicsAndDistortion) {
+  sensor_msgs::CameraInfo info;
+  info.K = {500, 0, 320, 0, 510, 240, 0, 0, 1};
+  info.distortion_model = "plumb_bob";
+  info.D = {0.1, -0.05, 0.001, 0.002, 0.0};
+  const PinholeIntrinsics camera = from_camera_info_msg(info);
+  EXPECT_EQ(camera.fx, 500);
+  EXPECT_EQ(camera.fy, 510);
+  EXPECT_EQ(camera.cx, 320);
+  EXPECT_EQ(camera.cy, 240);
+  EXPECT_EQ(camera.distortion, info.D);
+  info.distortion_model = "equidistant";
+  EXPECT_THROW(from_camera_info_msg(info), std::invalid_argument);
+  info.D.assign(5, 0.0);  // no distortion: the model's name does not matter
+  EXPECT_TRUE(from_camera_info_msg(info).distortion.empty());
+  info.K = {};
+  EXPECT_THROW(from_camera_info_msg(info), std::invalid_argument);
 }
 
 TEST(StateReport, TrackedFrameCarriesHeldTimingsAndDrops) {
