@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <future>
 #include <thread>
 
 namespace scbt::ros_node {
@@ -19,21 +20,22 @@ TEST(LatestSlot, KeepsOnlyTheNewestAndCountsTheReplaced) {
   EXPECT_EQ(slot.dropped(), 2u);
 }
 
-TEST(LatestSlot, PutNeverWaitsForASlowConsumer) {
+TEST(LatestSlot, PutNeverWaitsForABusyConsumer) {
   LatestSlot<int> slot;
+  std::promise<void> taken;
+  std::promise<void> producer_done;
   std::thread consumer([&] {
-    // Takes one item, then dawdles while the producer goes on.
     EXPECT_EQ(slot.take(), 0);
-    std::this_thread::sleep_for(std::chrono::milliseconds(200));
+    taken.set_value();
+    // Busy with item 0 until the producer has put everything: if put() waited for the consumer,
+    // neither would go on (the test would hang and time out).
+    producer_done.get_future().wait();
   });
   slot.put(0);
-  std::this_thread::sleep_for(std::chrono::milliseconds(50));
-  const auto start = std::chrono::steady_clock::now();
+  taken.get_future().wait();
   for (int i = 1; i <= 1000; ++i) slot.put(i);
-  const double seconds =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  producer_done.set_value();
   consumer.join();
-  EXPECT_LT(seconds, 0.15);  // far below the consumer's 200 ms: nothing waited for it
   EXPECT_EQ(slot.dropped(), 999u);
   EXPECT_EQ(slot.take(), 1000);
 }
