@@ -16,7 +16,7 @@ packages=(
   ros-core-dev libroscpp-dev libsensor-msgs-dev libgeometry-msgs-dev libstd-msgs-dev
   libcv-bridge-dev libimage-transport-dev libmessage-filters-dev
   python3-rosmaster python3-rospy python3-rostopic python3-rosbag python3-roslaunch rosout
-  python3-sensor-msgs python3-geometry-msgs python3-std-msgs
+  python3-sensor-msgs python3-geometry-msgs python3-std-msgs nlohmann-json3-dev
 )
 
 missing=()
