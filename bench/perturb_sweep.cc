@@ -112,6 +112,10 @@ int main(int argc, char** argv) {
   app.add_option("--roi-padding", options.detector.roi_padding);
   app.add_option("--cost-tolerance", options.cost_tolerance);
   app.add_option("--recover-by-motion", options.recover_by_motion);
+  app.add_option("--predict-motion", options.predict_motion);
+  app.add_option("--adaptive-thresholds", options.adaptive_thresholds.enabled);
+  app.add_option("--boundary-fraction", options.adaptive_thresholds.boundary_fraction);
+  app.add_option("--noise-deviations", options.adaptive_thresholds.noise_deviations);
   CLI11_PARSE(app, argc, argv);
   try {
     options.check();

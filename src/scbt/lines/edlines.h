@@ -70,6 +70,12 @@ class EdLines {
   void detect(const cv::Mat& gray, cv::Point offset, cv::Size full_size, const RowSpans* band,
               std::vector<Segment>* out);
 
+  // Replaces the gradient and anchor thresholds for the next detections (per-frame adaptation).
+  void set_thresholds(int gradient, int anchor) {
+    params_.gradient_threshold = gradient;
+    params_.anchor_threshold = anchor;
+  }
+
   // The edge segments (pixel chains, in gray's coordinates) of the last detect(): for tests.
   std::vector<std::vector<cv::Point>> edge_segments() const;
 

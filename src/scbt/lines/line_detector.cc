@@ -49,6 +49,11 @@ class OwnEdLinesDetector : public LineDetector {
     return segments;
   }
 
+  bool adapts_thresholds() const override { return true; }
+  void set_edge_thresholds(int gradient, int anchor) override {
+    edlines_.set_thresholds(gradient, anchor);
+  }
+
  private:
   static EdLinesParams to_params(const LineDetectorOptions& options) {
     EdLinesParams params;

@@ -74,6 +74,10 @@ class LineDetector {
   virtual std::vector<Segment> detect_near(const cv::Mat& crop, cv::Point offset,
                                            cv::Size full_size, const Polygon& boundary,
                                            double radius);
+  // Whether set_edge_thresholds has an effect (our EDLines).
+  virtual bool adapts_thresholds() const { return false; }
+  // Replaces the EDLines gradient and anchor thresholds for the next detections.
+  virtual void set_edge_thresholds(int /*gradient*/, int /*anchor*/) {}
 };
 
 // The part of a `frame_size` image within `margin` pixels of the polygon's bounding box (whole

@@ -23,6 +23,15 @@ double elapsed_ms(Clock::time_point since) {
 
 }  // namespace
 
+void Tracker::add_retry_times(const Attempt& retry, TrackResult* result) {
+  result->line_ms += retry.line_ms;
+  result->grouping_ms += retry.grouping_ms;
+  result->stages.filter_ms += retry.stages.filter_ms;
+  result->stages.graph_ms += retry.stages.graph_ms;
+  result->stages.search_ms += retry.stages.search_ms;
+  result->stages.choice_ms += retry.stages.choice_ms;
+}
+
 void to_gray(const cv::Mat& frame, cv::Mat* gray) {
   if (frame.empty()) throw std::invalid_argument("frame is empty");
   if (frame.depth() != CV_8U) {
@@ -78,6 +87,8 @@ void Tracker::init(const cv::Mat& frame, const Polygon& polygon) {
   to_gray(frame, &reference_gray_);
   reference_gray_ = reference_gray_.clone();
   frame_size_ = frame.size();
+  motion_.reset();
+  motion_.update(boundary_);
 }
 
 void Tracker::attempt(const cv::Mat& frame, const Polygon& prior, Attempt* a) {
@@ -93,6 +104,13 @@ void Tracker::attempt(const cv::Mat& frame, const Polygon& prior, Attempt* a) {
     if (a->roi.empty()) a->roi = cv::Rect(cv::Point(0, 0), frame_size_);
   }
   to_gray(frame(a->roi), &gray_);
+  if (options_.adaptive_thresholds.enabled && detector_->adapts_thresholds()) {
+    const EdgeThresholds t =
+        adapt_edge_thresholds(gray_, a->roi.tl(), prior, options_.detector.gradient_threshold,
+                              options_.detector.anchor_threshold, options_.adaptive_thresholds);
+    detector_->set_edge_thresholds(t.gradient, t.anchor);
+    a->thresholds = t;
+  }
   if (options_.detector.crop_to_boundary) {
     // Detectors that can (edlines) look only at the band around the prior boundary.
     a->detected = detector_->detect_near(gray_, a->roi.tl(), frame_size_, prior,
@@ -144,10 +162,27 @@ TrackResult Tracker::track(const cv::Mat& frame) {
   }
   TrackResult result;
   Attempt* a = &attempts_[0];
-  attempt(frame, boundary_, a);
+  if (options_.predict_motion) {
+    motion_.predict(boundary_, /*with_scale=*/false, &predicted_);
+  } else {
+    predicted_ = boundary_;
+  }
+  attempt(frame, predicted_, a);
   result.line_ms = a->line_ms;
   result.grouping_ms = a->grouping_ms;
   result.stages = a->stages;
+
+  // No candidate within the area gate of the last boundary: at a low frame rate an object
+  // approaching or receding fast grows or shrinks by more than the gate between frames. Search
+  // again with the size its recent growth predicts.
+  if (!a->choice && options_.predict_motion &&
+      !(area_similarity(motion_.predicted_area_ratio(), 1.0) > options_.min_area_similarity)) {
+    motion_.predict(boundary_, /*with_scale=*/true, &predicted_);
+    Attempt* retry = &attempts_[1];
+    attempt(frame, predicted_, retry);
+    add_retry_times(*retry, &result);
+    if (retry->choice) a = retry;
+  }
 
   // Lost: the boundary may have moved out of the search band (fast motion, camera swing).
   // Estimate how the content around it moved since it was last tracked, and search again there.
@@ -166,12 +201,7 @@ TrackResult Tracker::track(const cv::Mat& frame) {
       for (Point& p : moved) p += motion->shift;
       Attempt* retry = &attempts_[1];
       attempt(frame, moved, retry);
-      result.line_ms += retry->line_ms;
-      result.grouping_ms += retry->grouping_ms;
-      result.stages.filter_ms += retry->stages.filter_ms;
-      result.stages.graph_ms += retry->stages.graph_ms;
-      result.stages.search_ms += retry->stages.search_ms;
-      result.stages.choice_ms += retry->stages.choice_ms;
+      add_retry_times(*retry, &result);
       if (retry->choice) {
         a = retry;
         result.recovered = true;
@@ -195,8 +225,10 @@ TrackResult Tracker::track(const cv::Mat& frame) {
         std::swap(gray_, reference_gray_);
       }
     }
+    motion_.update(boundary_);
   } else {
     result.held = true;
+    motion_.update_held();
   }
 
   result.boundary = boundary_;

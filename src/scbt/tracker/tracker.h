@@ -10,6 +10,7 @@
 #include "scbt/geometry/polygon.h"
 #include "scbt/graph/segment_graph.h"
 #include "scbt/tracker/cycle_stage.h"
+#include "scbt/tracker/motion_model.h"
 #include "scbt/tracker/tracker_options.h"
 
 namespace scbt {
@@ -84,12 +85,15 @@ class Tracker {
   // image motion when it is lost (TrackerOptions::recover_by_motion).
   cv::Mat reference_gray_;
   cv::Rect reference_roi_;
+  MotionModel motion_;  // predicts where the boundary goes next (TrackerOptions::predict_motion)
+  Polygon predicted_;   // where this frame's search looks (reused buffer)
 
   // One pass of the per-frame pipeline searching around `prior`. Two are kept (the first try
   // and a recovery search) and reused frame to frame, so that steady-state tracking allocates
   // next to nothing.
   struct Attempt {
     cv::Rect roi;
+    EdgeThresholds thresholds;  // the detector's thresholds for this attempt
     std::vector<Segment> detected;
     std::vector<Segment> kept;
     std::vector<double> kept_distances;  // the filter's, 3 per kept segment (segment_filter.h)
@@ -102,6 +106,7 @@ class Tracker {
     StageTimes stages;
   };
   void attempt(const cv::Mat& frame, const Polygon& prior, Attempt* a);
+  static void add_retry_times(const Attempt& retry, TrackResult* result);
   Attempt attempts_[2];
   StableChooser chooser_;  // its buffers and distance cache are reused frame to frame
   bool keep_debug_ = false;

@@ -2,6 +2,7 @@
 #pragma once
 
 #include "scbt/cycles/bdsp.h"
+#include "scbt/lines/adaptive_thresholds.h"
 #include "scbt/lines/line_detector.h"
 
 namespace scbt {
@@ -20,6 +21,11 @@ struct TrackerOptions {
   // When no candidate qualifies, estimate the image motion around the boundary since it was last
   // tracked (phase correlation) and search again where it moved, instead of holding it in place.
   bool recover_by_motion = true;
+  // Search around where the boundary's recent motion (constant velocity) predicts it, rather than
+  // where it was in the last frame.
+  bool predict_motion = true;
+  // Per-frame EDLines thresholds from the boundary's contrast and the image noise (edlines only).
+  AdaptiveThresholdOptions adaptive_thresholds;
   BdspOptions bdsp;
   // Bound on the work per frame: when more segments than this pass the distance filter, only the
   // longest are kept (TrackResult::num_dropped counts the rest). BDSP grows about quadratically.

@@ -1,0 +1,151 @@
+#include "scbt/lines/adaptive_thresholds.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace scbt {
+namespace {
+
+// Bilinear sample of an 8-bit image (clamped to the border).
+double sample(const cv::Mat& gray, double x, double y) {
+  x = std::clamp(x, 0.0, gray.cols - 1.001);
+  y = std::clamp(y, 0.0, gray.rows - 1.001);
+  const int x0 = static_cast<int>(x), y0 = static_cast<int>(y);
+  const double fx = x - x0, fy = y - y0;
+  const std::uint8_t* r0 = gray.ptr<std::uint8_t>(y0);
+  const std::uint8_t* r1 = gray.ptr<std::uint8_t>(y0 + 1);
+  const double top = r0[x0] + fx * (r0[x0 + 1] - r0[x0]);
+  const double bottom = r1[x0] + fx * (r1[x0 + 1] - r1[x0]);
+  return top + fy * (bottom - top);
+}
+
+}  // namespace
+
+void AdaptiveThresholdOptions::check() const {
+  if (!(boundary_fraction > 0.0 && boundary_fraction <= 1.0)) {
+    throw std::invalid_argument("adaptive threshold boundary_fraction must be in (0, 1]");
+  }
+  if (!(noise_deviations >= 0.0) || !std::isfinite(noise_deviations)) {
+    throw std::invalid_argument("adaptive threshold noise_deviations must be >= 0");
+  }
+  if (boundary_samples < 3) throw std::invalid_argument("boundary_samples must be >= 3");
+  if (!(search_reach >= 1.0 && search_reach <= 50.0)) {
+    throw std::invalid_argument("adaptive threshold search_reach must be in 1..50 px");
+  }
+}
+
+double edlines_gradient_noise_gain() {
+  // |gx| = Sobel x of the smoothed image: separable, derivative (1 0 -1) * g and smoothing
+  // (1 2 1) * g, with g = (14 62 104 62 14) / 256 (gaussian_5x5.h).
+  static const double gain = [] {
+    const double g[5] = {14 / 256.0, 62 / 256.0, 104 / 256.0, 62 / 256.0, 14 / 256.0};
+    double d[7] = {0}, s[7] = {0};
+    for (int i = 0; i < 5; ++i) {
+      d[i] += g[i];
+      d[i + 2] -= g[i];
+      s[i] += g[i];
+      s[i + 1] += 2 * g[i];
+      s[i + 2] += g[i];
+    }
+    double dd = 0, ss = 0;
+    for (int i = 0; i < 7; ++i) {
+      dd += d[i] * d[i];
+      ss += s[i] * s[i];
+    }
+    return std::sqrt(dd * ss);
+  }();
+  return gain;
+}
+
+double estimate_noise_sigma(const cv::Mat& gray, int row_step) {
+  if (gray.type() != CV_8UC1) throw std::invalid_argument("noise estimate needs 8-bit grey");
+  if (gray.rows < 3 || gray.cols < 3) return 0.0;
+  row_step = std::max(row_step, 1);
+  double sum = 0.0;
+  long count = 0;
+  for (int r = 1; r + 1 < gray.rows; r += row_step) {
+    const std::uint8_t* a = gray.ptr<std::uint8_t>(r - 1);
+    const std::uint8_t* b = gray.ptr<std::uint8_t>(r);
+    const std::uint8_t* c = gray.ptr<std::uint8_t>(r + 1);
+    int row_sum = 0;
+    for (int x = 1; x + 1 < gray.cols; ++x) {
+      const int v = (a[x - 1] + a[x + 1] + c[x - 1] + c[x + 1]) -
+                    2 * (a[x] + c[x] + b[x - 1] + b[x + 1]) + 4 * b[x];
+      row_sum += std::abs(v);
+    }
+    sum += row_sum;
+    count += gray.cols - 2;
+  }
+  return count > 0 ? std::sqrt(CV_PI / 2.0) / 6.0 * sum / count : 0.0;
+}
+
+double boundary_edge_strength(const cv::Mat& gray, cv::Point offset, const Polygon& boundary,
+                              int samples, double reach) {
+  const size_t n = boundary.size();
+  if (n < 2 || gray.rows < 3 || gray.cols < 3 || samples < 1) return 0.0;
+  const double length = perimeter(boundary);
+  if (!(length > 0.0)) return 0.0;
+  std::vector<double> strengths;
+  strengths.reserve(samples);
+  const double step = length / samples;
+  double along = 0.5 * step;  // arc length of the next sample
+  double edge_start = 0.0;
+  const int reach_px = static_cast<int>(std::ceil(reach));
+  for (size_t i = 0; i < n && static_cast<int>(strengths.size()) < samples; ++i) {
+    const Point a = boundary[i] - Point(offset.x, offset.y);
+    const Point b = boundary[(i + 1) % n] - Point(offset.x, offset.y);
+    const double edge = cv::norm(b - a);
+    if (edge <= 0.0) continue;
+    const Point t = (b - a) * (1.0 / edge);
+    const Point normal(-t.y, t.x);
+    for (; along < edge_start + edge; along += step) {
+      const Point p = a + t * (along - edge_start);
+      if (p.x < 1 || p.y < 1 || p.x > gray.cols - 2 || p.y > gray.rows - 2) continue;
+      // The steepest slope across the boundary, each difference averaged over three points
+      // along it to damp noise.
+      double best = 0.0;
+      for (int k = -reach_px; k <= reach_px; ++k) {
+        double diff = 0.0;
+        for (int j = -1; j <= 1; ++j) {
+          const Point q = p + normal * k + t * j;
+          diff += sample(gray, q.x + normal.x, q.y + normal.y) -
+                  sample(gray, q.x - normal.x, q.y - normal.y);
+        }
+        best = std::max(best, std::abs(diff) / 6.0);
+      }
+      strengths.push_back(8.0 * best);
+    }
+    edge_start += edge;
+  }
+  if (strengths.empty()) return 0.0;
+  std::nth_element(strengths.begin(), strengths.begin() + strengths.size() / 2, strengths.end());
+  return strengths[strengths.size() / 2];
+}
+
+EdgeThresholds adapt_edge_thresholds(const cv::Mat& gray, cv::Point offset, const Polygon& boundary,
+                                     int gradient, int anchor,
+                                     const AdaptiveThresholdOptions& options) {
+  EdgeThresholds t;
+  t.gradient = gradient;
+  t.anchor = anchor;
+  if (!options.enabled) return t;
+  t.noise_sigma = estimate_noise_sigma(gray);
+  t.boundary_gradient = boundary_edge_strength(gray, offset, boundary, options.boundary_samples,
+                                               options.search_reach);
+  // |gx| + |gy| of pure noise: each term has deviation sigma * gain; their sum about sqrt(2)x.
+  const double noise_floor =
+      options.noise_deviations * std::sqrt(2.0) * edlines_gradient_noise_gain() * t.noise_sigma;
+  double threshold = gradient;
+  if (t.boundary_gradient > 0.0) {
+    threshold = std::min(threshold, options.boundary_fraction * t.boundary_gradient);
+  }
+  threshold = std::max(threshold, noise_floor);
+  t.gradient = std::max(1, static_cast<int>(std::lround(threshold)));
+  t.anchor = std::max(1, static_cast<int>(std::lround(anchor * threshold / gradient)));
+  return t;
+}
+
+}  // namespace scbt

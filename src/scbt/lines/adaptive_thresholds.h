@@ -1,0 +1,55 @@
+// EDLines' thresholds adapted to the frame: the published gradient threshold 36 and anchor
+// threshold 8 suit a well-exposed, sharp, clean image; in a dim, low-contrast or blurred frame
+// the object's own boundary falls below them, and in a noisy one noise ridges pass them. Per
+// frame the thresholds are lowered to a fraction of the gradient the tracked boundary itself
+// shows (so that its edges stay detectable, whatever the exposure or focus), never below what
+// the estimated sensor noise produces by chance, and never above the published values unless
+// the noise demands it. The anchor threshold scales with the gradient threshold.
+#pragma once
+
+#include <opencv2/core/mat.hpp>
+
+#include "scbt/geometry/polygon.h"
+
+namespace scbt {
+
+struct AdaptiveThresholdOptions {
+  bool enabled = false;
+  // The gradient threshold may drop to this fraction of the boundary's median edge strength.
+  double boundary_fraction = 0.25;
+  // ... but stays at least this many standard deviations of the gradient that noise alone gives.
+  double noise_deviations = 3.0;
+  int boundary_samples = 48;  // points along the boundary where its edge strength is read
+  double search_reach = 6.0;  // px on either side of the boundary searched for its edge
+
+  // Throws std::invalid_argument naming the first bad value.
+  void check() const;
+};
+
+struct EdgeThresholds {
+  int gradient = 36;
+  int anchor = 8;
+  double noise_sigma = 0.0;        // estimated noise of the grey image (grey levels)
+  double boundary_gradient = 0.0;  // the boundary's median edge strength, EDLines' units
+};
+
+// Immerkær's fast noise estimate (1996): the mean absolute response of the Laplacian difference
+// mask [1 -2 1; -2 4 -2; 1 -2 1] times sqrt(pi / 2) / 6, over every `row_step`-th row.
+double estimate_noise_sigma(const cv::Mat& gray, int row_step = 2);
+
+// Median over points along `boundary` (full-image coordinates; `gray` is the window at `offset`)
+// of the steepest intensity slope across the boundary within `reach` px, in the units of
+// EDLines' |gx| + |gy| (Sobel on the smoothed image: 8 x the slope per pixel of a ramp).
+// 0 when no sample falls inside the window.
+double boundary_edge_strength(const cv::Mat& gray, cv::Point offset, const Polygon& boundary,
+                              int samples, double reach);
+
+// The thresholds for this frame from the published ones (`gradient`, `anchor`).
+EdgeThresholds adapt_edge_thresholds(const cv::Mat& gray, cv::Point offset, const Polygon& boundary,
+                                     int gradient, int anchor,
+                                     const AdaptiveThresholdOptions& options);
+
+// Standard deviation of EDLines' |gx| (Sobel after its 5x5 Gaussian) for unit white noise.
+double edlines_gradient_noise_gain();
+
+}  // namespace scbt

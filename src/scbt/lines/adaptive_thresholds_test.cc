@@ -1,0 +1,96 @@
+#include "scbt/lines/adaptive_thresholds.h"
+
+#include <gtest/gtest.h>
+
+#include <opencv2/imgproc.hpp>
+
+namespace scbt {
+namespace {
+
+// A dark square on a lighter ground with the given step height, optionally blurred and noisy.
+cv::Mat scene(double step, double blur_sigma, double noise_sigma) {
+  cv::Mat m(200, 200, CV_32F, cv::Scalar(60.0 + step));
+  cv::rectangle(m, cv::Rect(50, 50, 100, 100), cv::Scalar(60.0), cv::FILLED);
+  if (blur_sigma > 0) cv::GaussianBlur(m, m, cv::Size(), blur_sigma);
+  if (noise_sigma > 0) {
+    cv::Mat noise(m.size(), CV_32F);
+    cv::RNG rng(3);
+    rng.fill(noise, cv::RNG::NORMAL, 0.0, noise_sigma);
+    m += noise;
+  }
+  cv::Mat out;
+  m.convertTo(out, CV_8U);
+  return out;
+}
+
+const Polygon kSquare = {{50, 50}, {149.5, 50}, {149.5, 149.5}, {50, 149.5}};
+
+TEST(AdaptiveThresholds, NoiseEstimateFollowsTheNoise) {
+  EXPECT_LT(estimate_noise_sigma(scene(80, 0, 0)), 1.0);
+  for (double sigma : {3.0, 8.0, 15.0}) {
+    EXPECT_NEAR(estimate_noise_sigma(scene(80, 0, sigma)), sigma, 0.15 * sigma + 0.5) << sigma;
+  }
+}
+
+TEST(AdaptiveThresholds, BoundaryStrengthScalesWithContrastAndFallsWithBlur) {
+  const double strong = boundary_edge_strength(scene(80, 0, 0), {0, 0}, kSquare, 48, 6);
+  const double weak = boundary_edge_strength(scene(24, 0, 0), {0, 0}, kSquare, 48, 6);
+  const double blurred = boundary_edge_strength(scene(80, 3, 0), {0, 0}, kSquare, 48, 6);
+  EXPECT_NEAR(weak / strong, 24.0 / 80.0, 0.03);
+  EXPECT_LT(blurred, 0.5 * strong);
+  // A boundary drawn 4 px off is still found within the reach.
+  Polygon off = kSquare;
+  for (Point& p : off) p += Point(4, 0);
+  EXPECT_NEAR(boundary_edge_strength(scene(80, 0, 0), {0, 0}, off, 48, 6), strong, 0.1 * strong);
+  // The window's offset is honoured.
+  const cv::Mat whole = scene(80, 0, 0);
+  EXPECT_NEAR(boundary_edge_strength(whole(cv::Rect(20, 10, 170, 180)), {20, 10}, kSquare, 48, 6),
+              strong, 1e-9);
+}
+
+TEST(AdaptiveThresholds, KeepsThePublishedValuesOnAClearImage) {
+  AdaptiveThresholdOptions options;
+  options.enabled = true;
+  const EdgeThresholds t = adapt_edge_thresholds(scene(80, 0, 1), {0, 0}, kSquare, 36, 8, options);
+  EXPECT_EQ(t.gradient, 36);
+  EXPECT_EQ(t.anchor, 8);
+}
+
+TEST(AdaptiveThresholds, LowersThemForADimOrBlurredBoundaryButNotBelowNoise) {
+  AdaptiveThresholdOptions options;
+  options.enabled = true;
+  const EdgeThresholds dim =
+      adapt_edge_thresholds(scene(24, 0, 0), {0, 0}, kSquare, 36, 8, options);
+  EXPECT_LT(dim.gradient, 36);
+  EXPECT_LT(dim.gradient, 0.5 * dim.boundary_gradient);
+  EXPECT_LT(dim.anchor, 8);
+  const EdgeThresholds blurred =
+      adapt_edge_thresholds(scene(80, 3, 0), {0, 0}, kSquare, 36, 8, options);
+  EXPECT_LT(blurred.gradient, 36);
+  // Strong noise raises the floor above the published threshold.
+  const EdgeThresholds noisy =
+      adapt_edge_thresholds(scene(80, 0, 15), {0, 0}, kSquare, 36, 8, options);
+  EXPECT_GT(noisy.gradient, dim.gradient);
+  EXPECT_NEAR(noisy.noise_sigma, 15.0, 3.0);
+  AdaptiveThresholdOptions off;
+  off.enabled = false;
+  const EdgeThresholds fixed = adapt_edge_thresholds(scene(24, 0, 0), {0, 0}, kSquare, 36, 8, off);
+  EXPECT_EQ(fixed.gradient, 36);
+  EXPECT_EQ(fixed.anchor, 8);
+}
+
+TEST(AdaptiveThresholds, RejectsBadOptions) {
+  AdaptiveThresholdOptions o;
+  o.boundary_fraction = 0;
+  EXPECT_THROW(o.check(), std::invalid_argument);
+  o = {};
+  o.boundary_samples = 2;
+  EXPECT_THROW(o.check(), std::invalid_argument);
+  o = {};
+  o.search_reach = 0.5;
+  EXPECT_THROW(o.check(), std::invalid_argument);
+  EXPECT_NO_THROW(AdaptiveThresholdOptions().check());
+}
+
+}  // namespace
+}  // namespace scbt
