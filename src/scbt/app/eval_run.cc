@@ -33,6 +33,15 @@ double seconds_since(Clock::time_point start) {
   return std::chrono::duration<double>(Clock::now() - start).count();
 }
 
+// A polygon scaled into a smaller frame, kept inside it.
+Polygon clamp_to_frame(Polygon polygon, cv::Size size) {
+  for (Point& p : polygon) {
+    p.x = std::clamp(p.x, 0.0, static_cast<double>(size.width));
+    p.y = std::clamp(p.y, 0.0, static_cast<double>(size.height));
+  }
+  return polygon;
+}
+
 // A sequence's ground truth, loaded once and shared by its jobs.
 struct Sequence {
   DatasetSequence files;
@@ -126,17 +135,42 @@ std::string results_file(const std::string& out, const std::string& tracker,
   return results_path((fs::path(out) / tracker).string(), sequence);
 }
 
+// Reads the next frame the perturbation shows (skipping stride - 1 frames after the first) and
+// degrades it into `shown`; counts the frames read in `frame_number`.
+bool read_shown_frame(FrameSource* source, const Perturbation& perturbation, int* frame_number,
+                      cv::Mat* frame, cv::Mat* shown) {
+  for (int skip = *frame_number == 0 ? 0 : perturbation.frame_stride() - 1; skip > 0; --skip) {
+    if (!source->read(frame)) return false;
+    ++*frame_number;
+  }
+  if (!source->read(frame)) return false;
+  ++*frame_number;
+  perturbation.apply(*frame, *frame_number, shown);
+  return true;
+}
+
 void run_tracker_job(const Job& job, const EvalRunOptions& options, Progress* progress,
                      JobOutcome* outcome) {
   const Sequence& seq = *job.sequence;
   const std::string what = job.tracker + "/" + seq.files.name;
+  const Perturbation& perturbation = options.perturbation;
+  const double scale = perturbation.scale();
   std::unique_ptr<FrameSource> source = open_frame_source(seq.files.frames);
-  cv::Mat frame;
-  if (!source->read(&frame)) throw std::runtime_error(seq.files.frames + ": no frames");
+  cv::Mat frame, shown;
+  int frame_number = 0;
+  if (!read_shown_frame(source.get(), perturbation, &frame_number, &frame, &shown)) {
+    throw std::runtime_error(seq.files.frames + ": no frames");
+  }
   const cv::Size canvas = frame.size();
+  // With a frame stride, the truth of the frames shown.
+  std::vector<Polygon> truth;
+  for (size_t k = 0; k < seq.truth.size(); k += perturbation.frame_stride()) {
+    truth.push_back(seq.truth[k]);
+  }
   std::unique_ptr<PolygonTracker> tracker = make_polygon_tracker(job.tracker, options.tracker);
   try {
-    tracker->init(frame, seq.truth.front());
+    tracker->init(shown,
+                  clamp_to_frame(scale_polygon_to_frame(seq.truth.front(), scale), shown.size()));
   } catch (const std::invalid_argument& e) {
     throw std::invalid_argument(what + ": initial polygon (ground truth line 1): " + e.what());
   }
@@ -153,12 +187,13 @@ void run_tracker_job(const Job& job, const EvalRunOptions& options, Progress* pr
   t.has_timing = true;
   double fps_sum = 0.0;
   int fps_frames = 0;
-  while ((options.max_frames <= 0 || static_cast<int>(lines.size()) < options.max_frames) &&
-         source->read(&frame)) {
+  while ((options.max_frames <= 0 ||
+          frame_number + perturbation.frame_stride() <= options.max_frames) &&
+         read_shown_frame(source.get(), perturbation, &frame_number, &frame, &shown)) {
     const Clock::time_point start = Clock::now();
-    const TrackResult r = tracker->track(frame);
+    const TrackResult r = tracker->track(shown);
     const double ms = 1000.0 * seconds_since(start);
-    lines.push_back(format_polygon_line(r.boundary));
+    lines.push_back(format_polygon_line(scale_polygon_from_frame(r.boundary, scale)));
     results.stream() << lines.back() << '\n';
     FrameRecord f;
     f.has_timing = true;
@@ -193,7 +228,10 @@ void run_tracker_job(const Job& job, const EvalRunOptions& options, Progress* pr
   }
   t.fps = fps_frames > 0 ? fps_sum / fps_frames : std::numeric_limits<double>::quiet_NaN();
 
-  outcome->frames = score_lines(lines, seq.truth, canvas, what, &outcome->warnings);
+  outcome->frames = score_lines(lines, truth, canvas, what, &outcome->warnings);
+  for (size_t k = 0; k < outcome->frames.size(); ++k) {
+    outcome->frames[k].frame = static_cast<int>(1 + k * perturbation.frame_stride());
+  }
   for (size_t k = 1; k < outcome->frames.size() && k < stats.size(); ++k) {
     FrameRecord& f = outcome->frames[k];
     const FrameRecord& s = stats[k];
@@ -565,6 +603,11 @@ EvalRunSummary run_eval(const EvalRunOptions& options, std::ostream& log) {
                          " (initialised from ground-truth "
                          "line 1; results in <tracker>/<Seq>.txt)");
     info.notes.push_back(line);
+    if (options.perturbation.kind != PerturbationKind::kNone) {
+      info.notes.push_back("Frames perturbed: " + options.perturbation.name() +
+                           " (eval/perturb.h; seed " + std::to_string(options.perturbation.seed) +
+                           ")");
+    }
   }
   for (const auto& [name, dir] : results) {
     info.notes.push_back("Results scored: " + name + " = `" + dir + "`");

@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "scbt/eval/perturb.h"
 #include "scbt/eval/report.h"
 #include "scbt/tracker/tracker_options.h"
 
@@ -25,6 +26,10 @@ struct EvalRunOptions {
   bool quiet = false;      // no progress on the log
   bool plot = true;        // write success_curves.png
   TrackerOptions tracker;  // for "bdsp" (and peers that use them)
+  // Frames are degraded like this before trackers see them (eval/perturb.h); results of a
+  // downscaled run are scaled back and scored at full size, and with a frame stride only the
+  // frames shown are scored. Results folders (`results`) are scored as they are.
+  Perturbation perturbation;
 
   // Throws std::invalid_argument naming the first bad value (no file system access).
   void check() const;

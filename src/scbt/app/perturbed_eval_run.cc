@@ -72,8 +72,8 @@ void write_tables(const PerturbedEvalSummary& summary, const std::string& out,
       }
       if (pooled == nullptr) continue;
       std::snprintf(cell, sizeof(cell), "| %.3f | %.3f | %.3f | %.3f | %s |",
-                    pooled->errors.success_5, pooled->errors.success_10,
-                    pooled->errors.success_20, pooled->errors.auc,
+                    pooled->errors.success_5, pooled->errors.success_10, pooled->errors.success_20,
+                    pooled->errors.auc,
                     pooled->timing.has_timing ? std::to_string(pooled->timing.held).c_str() : "");
       md.stream() << "| `" << name << "` | " << tracker << ' ' << cell;
       for (const std::string& seq : sequences) {
@@ -177,7 +177,8 @@ cv::Mat render_levels(const PerturbedEvalSummary& summary) {
         cv::circle(image, p, 4, colour, cv::FILLED, cv::LINE_AA);
         previous = p;
       }
-      cv::putText(image, trackers[t], {plot.x + 8, plot.y + plot.height - 10 - 16 * static_cast<int>(t)},
+      cv::putText(image, trackers[t],
+                  {plot.x + 8, plot.y + plot.height - 10 - 16 * static_cast<int>(t)},
                   cv::FONT_HERSHEY_SIMPLEX, 0.45, colour, 1, cv::LINE_AA);
     }
   }

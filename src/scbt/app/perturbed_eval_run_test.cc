@@ -23,8 +23,8 @@ class PerturbedEvalTest : public ::testing::Test {
             ("scbt-perturbed-eval-test-" + std::to_string(::getpid()) + "-" +
              ::testing::UnitTest::GetInstance()->current_test_info()->name());
     fs::remove_all(root_);
-    write_synthetic_sequence(root_ / "data", "Slide", SceneShape::kBox, {130.0, 120.0},
-                             {2.0, 0.0}, 7, kFrames);
+    write_synthetic_sequence(root_ / "data", "Slide", SceneShape::kBox, {130.0, 120.0}, {2.0, 0.0},
+                             7, kFrames);
     options_.dataset = (root_ / "data").string();
     options_.out = (root_ / "out").string();
     options_.quiet = true;
@@ -83,9 +83,8 @@ TEST_F(PerturbedEvalTest, OneReportPerPerturbationThenTheSummaryAndPlot) {
 }
 
 TEST_F(PerturbedEvalTest, RejectsRepeatsAndEmptyLists) {
-  EXPECT_THROW(
-      run_perturbed_evals(options_, parse_perturbation_list("noise:5 noise:5"), std::cerr),
-      std::invalid_argument);
+  EXPECT_THROW(run_perturbed_evals(options_, parse_perturbation_list("noise:5 noise:5"), std::cerr),
+               std::invalid_argument);
   EXPECT_THROW(run_perturbed_evals(options_, {}, std::cerr), std::invalid_argument);
   EXPECT_FALSE(fs::exists(options_.out));
 }

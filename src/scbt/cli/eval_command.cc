@@ -1,6 +1,7 @@
 #include <iostream>
 
 #include "scbt/app/eval_run.h"
+#include "scbt/app/perturbed_eval_run.h"
 #include "scbt/cli/commands.h"
 #include "scbt/eval/dataset.h"
 #include "scbt/io/frame_source.h"
@@ -29,6 +30,8 @@ void add_eval_command(CLI::App& app, int* exit_code) {
   auto detector = std::make_shared<std::string>("edlines");
   auto list = std::make_shared<bool>(false);
   auto no_plot = std::make_shared<bool>(false);
+  auto perturb = std::make_shared<std::string>();
+  auto perturb_seed = std::make_shared<unsigned long long>(1);
   CLI::App* command = app.add_subcommand(
       "eval",
       "Run trackers over a dataset laid out like the public one (or score existing results) "
@@ -54,11 +57,19 @@ void add_eval_command(CLI::App& app, int* exit_code) {
       ->capture_default_str();
   command->add_option("--max-frames", options->max_frames,
                       "Only the first N frames of each sequence (0: all)");
+  command->add_option(
+      "--perturb", *perturb,
+      "Evaluate once per perturbation of the frames, separated by ';' or spaces, each into "
+      "OUT/<spec>/, plus OUT/perturb_summary.md/.csv and perturb_levels.png: none, stride:K, "
+      "noise:SIGMA, blur:SIGMA, motion-blur:LENGTH[,DEGREES], brightness:B, contrast:C, gamma:G, "
+      "lowlight:B[,SIGMA], jpeg:QUALITY, downscale:FACTOR (docs/robustness-to-camera.md)");
+  command->add_option("--perturb-seed", *perturb_seed, "Seed of the perturbations' noise")
+      ->capture_default_str();
   command->add_flag("--no-plot", *no_plot, "Do not write success_curves.png");
   command->add_flag("-q,--quiet", options->quiet, "No progress output");
   command->add_flag("--list", *list, "List the trackers and the dataset's sequences, then exit");
   add_tracker_options(command, &options->tracker, detector.get());
-  command->callback([options, detector, list, no_plot, exit_code] {
+  command->callback([options, detector, list, no_plot, perturb, perturb_seed, exit_code] {
     options->tracker.detector.kind = parse_line_detector_kind(*detector);
     if (*list) {
       list_dataset(*options);
@@ -66,6 +77,13 @@ void add_eval_command(CLI::App& app, int* exit_code) {
       return;
     }
     options->plot = !*no_plot;
+    if (!perturb->empty()) {
+      const PerturbedEvalSummary summary = run_perturbed_evals(
+          *options, parse_perturbation_list(*perturb, *perturb_seed), std::cerr);
+      if (!options->quiet) std::cout << summary.files.front() << '\n';
+      *exit_code = 0;
+      return;
+    }
     const EvalRunSummary summary = run_eval(*options, std::cerr);
     if (!options->quiet) std::cout << summary.files.front() << '\n';
     *exit_code = 0;

@@ -138,11 +138,14 @@ EdgeThresholds adapt_edge_thresholds(const cv::Mat& gray, cv::Point offset, cons
   // |gx| + |gy| of pure noise: each term has deviation sigma * gain; their sum about sqrt(2)x.
   const double noise_floor =
       options.noise_deviations * std::sqrt(2.0) * edlines_gradient_noise_gain() * t.noise_sigma;
+  // Raising the threshold above the published one for noise loses more of the boundary than it
+  // removes noise edges (which the a-contrario validation rejects anyway): noise only limits
+  // how far it is lowered.
   double threshold = gradient;
   if (t.boundary_gradient > 0.0) {
-    threshold = std::min(threshold, options.boundary_fraction * t.boundary_gradient);
+    threshold =
+        std::min(threshold, std::max(options.boundary_fraction * t.boundary_gradient, noise_floor));
   }
-  threshold = std::max(threshold, noise_floor);
   t.gradient = std::max(1, static_cast<int>(std::lround(threshold)));
   t.anchor = std::max(1, static_cast<int>(std::lround(anchor * threshold / gradient)));
   return t;

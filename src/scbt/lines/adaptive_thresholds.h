@@ -3,8 +3,8 @@
 // the object's own boundary falls below them, and in a noisy one noise ridges pass them. Per
 // frame the thresholds are lowered to a fraction of the gradient the tracked boundary itself
 // shows (so that its edges stay detectable, whatever the exposure or focus), never below what
-// the estimated sensor noise produces by chance, and never above the published values unless
-// the noise demands it. The anchor threshold scales with the gradient threshold.
+// the estimated sensor noise produces by chance, and never above the published values. The
+// anchor threshold scales with the gradient threshold.
 #pragma once
 
 #include <opencv2/core/mat.hpp>
@@ -16,7 +16,7 @@ namespace scbt {
 struct AdaptiveThresholdOptions {
   bool enabled = false;
   // The gradient threshold may drop to this fraction of the boundary's median edge strength.
-  double boundary_fraction = 0.25;
+  double boundary_fraction = 0.5;
   // ... but stays at least this many standard deviations of the gradient that noise alone gives.
   double noise_deviations = 3.0;
   int boundary_samples = 48;  // points along the boundary where its edge strength is read
