@@ -4,10 +4,13 @@
 #include <gtest/gtest.h>
 #include <signal.h>
 #include <sys/stat.h>
+#include <sys/sysmacros.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -15,12 +18,14 @@
 #include <functional>
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
+#include <opencv2/videoio.hpp>
 #include <sstream>
 #include <string>
 #include <thread>
 #include <vector>
 
 #include "scbt/geometry/polygon_io.h"
+#include "scbt/io/avi_test_util.h"
 #include "scbt/synthetic/scene.h"
 
 #ifndef SCBT_BINARY
@@ -39,6 +44,13 @@ std::string read_file(const fs::path& path) {
   return text.str();
 }
 
+std::vector<std::string> read_text_lines_of(const std::string& text) {
+  std::vector<std::string> lines;
+  std::istringstream stream(text);
+  for (std::string line; std::getline(stream, line);) lines.push_back(line);
+  return lines;
+}
+
 void write_file(const fs::path& path, const std::string& content) {
   std::ofstream(path, std::ios::binary) << content;
 }
@@ -48,11 +60,13 @@ struct RunResult {
   std::string err;  // stderr
 };
 
-// Runs scbt with `args` (already shell-quoted) in `dir`, capturing stderr.
-RunResult run_scbt(const fs::path& dir, const std::string& args) {
+// Runs scbt with `args` (already shell-quoted) in `dir`, capturing stderr; `prefix` is shell
+// code run first in the same shell (limits, traps).
+RunResult run_scbt(const fs::path& dir, const std::string& args, const std::string& prefix = "") {
   const fs::path err = dir / "stderr.txt";
-  const std::string command = "cd '" + dir.string() + "' && '" + std::string(SCBT_BINARY) + "' " +
-                              args + " 2> '" + err.string() + "' > /dev/null";
+  const std::string command = "cd '" + dir.string() + "' && " + prefix + " '" +
+                              std::string(SCBT_BINARY) + "' " + args + " 2> '" + err.string() +
+                              "' > /dev/null";
   const int status = std::system(command.c_str());
   RunResult result;
   result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : 1000 + WTERMSIG(status);
@@ -113,17 +127,76 @@ std::string points_of(const Polygon& polygon) {
   return text;
 }
 
+using Check = std::function<void(const fs::path& dir, const std::string& err)>;
+
 struct Case {
   std::string name;
   std::function<void(const fs::path& dir)> setup;  // after the default sequence is written
   std::string args;                                // out.txt is the results file
   int exit_code;
-  std::string message;  // must appear in stderr
-  int result_lines;     // lines expected in out.txt; -1: out.txt must not exist
+  std::string message;      // must appear in stderr
+  int result_lines;         // lines expected in out.txt; -1: out.txt must not exist; kAsBefore:
+                            // out.txt must hold what the setup wrote ("old results\n")
+  Check check = nullptr;    // more to verify afterwards
+  std::string prefix = "";  // shell code before the command
 };
+
+constexpr int kAsBefore = -2;
 
 const std::string kTrack = "track seq --init init.txt -o out.txt -q ";
 void no_setup(const fs::path&) {}
+
+// Setups and checks for the output cases (issue 16).
+void old_results(const fs::path& dir) { write_file(dir / "out.txt", "old results\n"); }
+
+std::function<void(const fs::path&)> old_results_and(std::function<void(const fs::path&)> more) {
+  return [more](const fs::path& dir) {
+    old_results(dir);
+    more(dir);
+  };
+}
+
+void make_null_device(const fs::path& dir) {
+  if (::mknod((dir / "null").c_str(), S_IFCHR | 0666, makedev(1, 3)) != 0) {
+    GTEST_SKIP() << "mknod is not permitted here";
+  }
+}
+
+Check still_a_device(const std::string& name) {
+  return [name](const fs::path& dir, const std::string&) {
+    EXPECT_TRUE(fs::is_character_file(fs::symlink_status(dir / name)));
+  };
+}
+
+Check file_unchanged(const std::string& name) {
+  return [name](const fs::path& dir, const std::string&) {
+    const std::string before = read_file(dir / (name + ".before"));
+    EXPECT_FALSE(before.empty());
+    EXPECT_EQ(read_file(dir / name), before) << name << " was changed";
+  };
+}
+
+// Keeps a copy of `name` (made by the setup) to compare with after the run.
+std::function<void(const fs::path&)> keep_copy(const std::string& name) {
+  return [name](const fs::path& dir) { fs::copy_file(dir / name, dir / (name + ".before")); };
+}
+
+// The sequence as an MJPG video, dir/in.avi, with frame `dropped` (1-based) a dropped frame that
+// the reader skips silently (0: none dropped).
+std::function<void(const fs::path&)> sequence_video(int dropped) {
+  return [dropped](const fs::path& dir) {
+    if (dropped > 0) {
+      ASSERT_EQ(
+          write_avi_with_a_dropped_frame((dir / "in.avi").string(), sequence().frames, dropped),
+          "");
+      return;
+    }
+    cv::VideoWriter writer((dir / "in.avi").string(), cv::CAP_FFMPEG,
+                           cv::VideoWriter::fourcc('M', 'J', 'P', 'G'), 10,
+                           sequence().frames[0].size());
+    for (const cv::Mat& frame : sequence().frames) writer.write(frame);
+  };
+}
 
 std::vector<Case> cases() {
   const int n = static_cast<int>(sequence().frames.size());
@@ -231,6 +304,143 @@ std::vector<Case> cases() {
       {"unknown option", no_setup, kTrack + "--bogus", 2, "scbt: error: ", -1},
       {"unwritable output folder", no_setup, "track seq --init init.txt -o no/such/out.txt", 1,
        "no/such/out.txt: cannot open for writing", -1},
+      // Outputs that are not regular files are written in place, never replaced (issue 16).
+      {"results to a device node", make_null_device, "track seq --init init.txt -o null -q", 0, "",
+       -1, still_a_device("null")},
+      {"results to a symlink to a device",
+       [](const fs::path& dir) { fs::create_symlink("/dev/null", dir / "link"); },
+       "track seq --init init.txt -o link -q", 0, "", -1,
+       [](const fs::path& dir, const std::string&) {
+         EXPECT_TRUE(fs::is_symlink(fs::symlink_status(dir / "link")));
+         EXPECT_TRUE(fs::is_character_file("/dev/null"));
+       }},
+      {"results to a FIFO", [](const fs::path& dir) { ::mkfifo((dir / "fifo").c_str(), 0600); },
+       "track seq --init init.txt -o fifo -q", 0, "", -1,
+       [n](const fs::path& dir, const std::string&) {
+         EXPECT_TRUE(fs::is_fifo(fs::symlink_status(dir / "fifo")));
+         // The reader, started before the run, may still be writing its copy.
+         for (int wait = 0; wait < 100; ++wait) {
+           if (static_cast<int>(read_text_lines((dir / "copy.txt").string()).size()) == n) break;
+           std::this_thread::sleep_for(std::chrono::milliseconds(50));
+         }
+         EXPECT_EQ(static_cast<int>(read_text_lines((dir / "copy.txt").string()).size()), n);
+       },
+       "(cat fifo > copy.txt &);"},
+      {"results to a full device", no_setup, "track seq --init init.txt -o /dev/full -q", 1,
+       "/dev/full: write failed: No space left on device", -1},
+      {"results to a symlink to a regular file",
+       [](const fs::path& dir) {
+         fs::create_directory(dir / "real");
+         write_file(dir / "real" / "results.txt", "old results\n");
+         fs::create_symlink("real/results.txt", dir / "link");
+       },
+       "track seq --init init.txt -o link -q", 0, "", -1,
+       [n](const fs::path& dir, const std::string&) {
+         EXPECT_TRUE(fs::is_symlink(fs::symlink_status(dir / "link")));
+         EXPECT_EQ(static_cast<int>(read_text_lines((dir / "link").string()).size()), n);
+       }},
+      {"an 0600 output stays 0600",
+       [](const fs::path& dir) {
+         old_results(dir);
+         fs::permissions(dir / "out.txt", fs::perms::owner_read | fs::perms::owner_write);
+       },
+       kTrack, 0, "", n,
+       [](const fs::path& dir, const std::string&) {
+         EXPECT_EQ(fs::status(dir / "out.txt").permissions() & fs::perms::all,
+                   fs::perms::owner_read | fs::perms::owner_write);
+       }},
+      // Outputs that would overwrite an input or each other are refused before tracking.
+      {"results onto the init file", keep_copy("init.txt"), "track seq --init init.txt -o init.txt",
+       2, "scbt: error: -o init.txt is the same file as --init init.txt", -1,
+       file_unchanged("init.txt")},
+      {"results onto an input image", keep_copy("seq/0001.png"),
+       "track seq --init init.txt -o seq/0001.png", 2,
+       "-o seq/0001.png is inside the input folder INPUT seq", -1, file_unchanged("seq/0001.png")},
+      {"frames into the input folder", keep_copy("seq/0001.png"), kTrack + "--frames-out seq", 2,
+       "--frames-out seq is the same folder as INPUT seq", -1, file_unchanged("seq/0001.png")},
+      {"video onto the input video",
+       [](const fs::path& dir) {
+         sequence_video(0)(dir);
+         keep_copy("in.avi")(dir);
+       },
+       "track in.avi --init init.txt -o out.txt --video in.avi", 2,
+       "--video in.avi is the same file as INPUT in.avi", -1, file_unchanged("in.avi")},
+      {"video and results onto one file", no_setup, kTrack + "--video out.txt", 2,
+       "--video out.txt is the same file as -o out.txt", -1},
+      {"csv and results onto one file", old_results, kTrack + "--csv out.txt", 2,
+       "--csv out.txt is the same file as -o out.txt", kAsBefore},
+      {"csv and results both to stdout", no_setup, "track seq --init init.txt -o - --csv -", 2,
+       "--csv - is the same file as -o -", -1},
+      // A failed run replaces nothing and leaves no temporary file.
+      {"csv naming a folder",
+       old_results_and([](const fs::path& dir) { fs::create_directory(dir / "stats"); }),
+       kTrack + "--csv stats", 1, "stats: is a folder, not a file", kAsBefore},
+      {"results naming a folder",
+       [](const fs::path& dir) { fs::create_directory(dir / "results"); },
+       "track seq --init init.txt -o results", 1, "results: is a folder, not a file", -1},
+      {"video naming a folder",
+       old_results_and([](const fs::path& dir) { fs::create_directory(dir / "video.avi"); }),
+       kTrack + "--video video.avi", 1, "video.avi: is a folder, not a file", kAsBefore},
+      {"video named like an image pattern", old_results, kTrack + "--video 'f%02d.jpg'", 2,
+       "must end in .avi, .mkv, .mp4 or .m4v", kAsBefore,
+       [](const fs::path& dir, const std::string&) {
+         EXPECT_FALSE(fs::exists(dir / "f00.jpg"));
+         EXPECT_FALSE(fs::exists(dir / "f01.jpg"));
+       }},
+      {"video on a full disk", old_results, kTrack + "--video big.avi", 1,
+       "big.avi: write failed: the finished video", kAsBefore,
+       [](const fs::path& dir, const std::string&) { EXPECT_FALSE(fs::exists(dir / "big.avi")); },
+       // Files may grow to 6 KiB only (ulimit counts 512-byte blocks): the results can, the
+       // video (5.5 KiB of AVI header, then the frames) cannot.
+       "trap '' XFSZ; ulimit -f 12;"},
+      // Bounded reads.
+      {"init file that never ends", no_setup, "track seq --init /dev/zero -o out.txt", 1,
+       "/dev/zero:1: line longer than 1 MiB", -1},
+      {"init polygon over the vertex limit",
+       [](const fs::path& dir) {
+         Polygon circle;
+         for (int i = 0; i <= kMaxBoundaryVertices; ++i) {
+           const double angle = 2.0 * M_PI * i / (kMaxBoundaryVertices + 1);
+           circle.emplace_back(80 + 30 * std::cos(angle), 60 + 30 * std::sin(angle));
+         }
+         write_file(dir / "init.txt", format_polygon_line(circle) + "\n");
+       },
+       kTrack, 1, "at most 20000", -1},
+      {"polygon file with a byte-order mark",
+       init_file("\xEF\xBB\xBF" + format_polygon_line(t) + "\n"), kTrack, 1,
+       "init.txt:1: line starts with a UTF-8 byte-order mark", -1},
+      {"denormal coordinate is a number", init_file("4 1e-310 1e-310 60 0 60 40 0 40\n"), kTrack, 0,
+       "", n},
+      // Frames that would silently shift every later one.
+      {"first image name is a folder",
+       [](const fs::path& dir) {
+         fs::remove(dir / "seq" / frame_name(1));
+         fs::create_directory(dir / "seq" / frame_name(1));
+       },
+       kTrack, 1, "seq/0001.png: named like a frame but not a regular file", -1},
+      {"numbering starting at 0005",
+       [](const fs::path& dir) {
+         for (int i = 1; i <= 4; ++i) fs::remove(dir / "seq" / frame_name(i));
+       },
+       kTrack, 1, "seq: image numbering starts at 0005.png, not at 0 or 1", -1},
+      {"video frame the reader skips: held in place", sequence_video(5),
+       "track in.avi --init init.txt -o out.txt -q --csv out.csv", 3,
+       "scbt: warning: in.avi frame 5: skipped by the video decoder", n,
+       [](const fs::path& dir, const std::string&) {
+         const std::vector<std::string> rows = read_text_lines((dir / "out.csv").string());
+         ASSERT_GE(rows.size(), 5u);
+         EXPECT_EQ(rows[4].rfind("5,1,", 0), 0u) << rows[4];  // frame 5 held, in its place
+       }},
+      {"newline in a folder name cannot forge a line",
+       [](const fs::path& dir) {
+         fs::rename(dir / "seq", dir / "x\nscbt: error: forged");
+         write_file(dir / "x\nscbt: error: forged" / frame_name(4), "garbage");
+       },
+       "track \"$(printf 'x\\nscbt: error: forged')\" --init init.txt -o out.txt -q", 3,
+       "x\\nscbt: error: forged/0004.png: cannot decode image", n,
+       [](const fs::path&, const std::string& err) {
+         EXPECT_EQ(err.find("\nscbt: error: forged"), std::string::npos) << err;
+       }},
   };
 }
 
@@ -246,7 +456,11 @@ TEST_P(CliBadInputTest, MessageExitCodeAndOutput) {
   fs::create_directories(dir);
   write_sequence(dir);
   c.setup(dir);
-  const RunResult r = run_scbt(dir, c.args);
+  if (::testing::Test::IsSkipped()) {
+    fs::remove_all(dir);
+    return;
+  }
+  const RunResult r = run_scbt(dir, c.args, c.prefix);
   // For the record (ctest --verbose): what each bad input got.
   std::printf("[case] %s -> exit %d: %s\n", c.name.c_str(), r.exit_code,
               r.err.empty() ? "(no message)\n" : r.err.c_str());
@@ -260,7 +474,9 @@ TEST_P(CliBadInputTest, MessageExitCodeAndOutput) {
     ASSERT_NE(at, std::string::npos) << r.err;
     EXPECT_EQ(r.err.find('\n', at), r.err.size() - 1) << r.err;
   }
-  if (c.result_lines < 0) {
+  if (c.result_lines == kAsBefore) {
+    EXPECT_EQ(read_file(dir / "out.txt"), "old results\n");
+  } else if (c.result_lines < 0) {
     EXPECT_FALSE(fs::exists(dir / "out.txt"));
   } else {
     const std::vector<std::string> lines = read_text_lines((dir / "out.txt").string());
@@ -271,8 +487,9 @@ TEST_P(CliBadInputTest, MessageExitCodeAndOutput) {
       EXPECT_TRUE(try_parse_polygon_line(line, &polygon, &error)) << line << ": " << error;
     }
   }
-  // No temporary file is left behind.
-  for (const fs::directory_entry& e : fs::directory_iterator(dir)) {
+  if (c.check) c.check(dir, r.err);
+  // No temporary file is left behind, anywhere.
+  for (const fs::directory_entry& e : fs::recursive_directory_iterator(dir)) {
     EXPECT_EQ(e.path().filename().string().find(".tmp"), std::string::npos) << e.path();
   }
   fs::remove_all(dir);
@@ -335,14 +552,39 @@ TEST_F(CliRunTest, HardFramesAreNotedInTheCsv) {
   EXPECT_NE(rows[4].find("segments capped: "), std::string::npos) << rows[4];
 }
 
-// SIGTERM / SIGINT mid-run: the frames tracked so far form a complete results file, the run says
-// how far it got, and the exit code is 128 + the signal.
-void expect_interrupted_cleanly(const fs::path& dir, int signal_number) {
-  // A long input: the first frame repeated (copies are cheap; decoding and tracking are not).
-  const int frames = 4000;
+// A long input: the first frame repeated (copies are cheap; decoding and tracking are not).
+void lengthen_sequence(const fs::path& dir, int frames) {
   for (int i = static_cast<int>(sequence().frames.size()) + 1; i <= frames; ++i) {
     fs::copy_file(dir / "seq" / frame_name(1), dir / "seq" / frame_name(i));
   }
+}
+
+// Waits until the run has opened its outputs (its temporary files exist), which it does after
+// installing its signal handlers: a signal sent earlier would find the default action.
+void wait_until_tracking(const fs::path& dir) {
+  for (int wait = 0; wait < 600; ++wait) {
+    for (const fs::directory_entry& e : fs::directory_iterator(dir)) {
+      if (e.path().filename().string().find(".tmp-") != std::string::npos) {
+        std::this_thread::sleep_for(std::chrono::milliseconds(300));
+        return;
+      }
+    }
+    std::this_thread::sleep_for(std::chrono::milliseconds(50));
+  }
+  ADD_FAILURE() << "the run did not open its outputs within 30 s";
+}
+
+void expect_no_temporary_files(const fs::path& dir) {
+  for (const fs::directory_entry& e : fs::recursive_directory_iterator(dir)) {
+    EXPECT_EQ(e.path().filename().string().find(".tmp"), std::string::npos) << e.path();
+  }
+}
+
+// SIGTERM / SIGINT / SIGHUP mid-run: the frames tracked so far form a complete results file, the
+// run says how far it got, and the exit code is 128 + the signal.
+void expect_interrupted_cleanly(const fs::path& dir, int signal_number) {
+  const int frames = 4000;
+  lengthen_sequence(dir, frames);
   const pid_t child = ::fork();
   ASSERT_GE(child, 0);
   if (child == 0) {
@@ -353,14 +595,16 @@ void expect_interrupted_cleanly(const fs::path& dir, int signal_number) {
             "--csv", "out.csv", static_cast<char*>(nullptr));
     ::_exit(127);
   }
-  std::this_thread::sleep_for(std::chrono::milliseconds(1500));
+  wait_until_tracking(dir);
   ::kill(child, signal_number);
   int status = 0;
   ASSERT_EQ(::waitpid(child, &status, 0), child);
   ASSERT_TRUE(WIFEXITED(status)) << "killed by signal " << WTERMSIG(status);
   const std::string err = read_file(dir / "stderr.txt");
   ASSERT_EQ(WEXITSTATUS(status), 128 + signal_number) << err;
-  const std::string name = signal_number == SIGINT ? "SIGINT" : "SIGTERM";
+  const std::string name = signal_number == SIGINT   ? "SIGINT"
+                           : signal_number == SIGHUP ? "SIGHUP"
+                                                     : "SIGTERM";
   const size_t at = err.find("interrupted by " + name + " after frame ");
   ASSERT_NE(at, std::string::npos) << err;
   const int reached = std::atoi(err.c_str() + at + name.size() + 28);
@@ -378,11 +622,66 @@ void expect_interrupted_cleanly(const fs::path& dir, int signal_number) {
   }
   // The CSV has a header and one row per tracked frame (the first frame has none).
   EXPECT_EQ(static_cast<int>(read_text_lines((dir / "out.csv").string()).size()), reached);
+  expect_no_temporary_files(dir);
 }
 
 TEST_F(CliRunTest, SigtermFlushesAValidResultsFile) { expect_interrupted_cleanly(dir_, SIGTERM); }
 
 TEST_F(CliRunTest, SigintFlushesAValidResultsFile) { expect_interrupted_cleanly(dir_, SIGINT); }
+
+// A closed terminal ends the run like SIGTERM (exit code 129).
+TEST_F(CliRunTest, SighupFlushesAValidResultsFile) { expect_interrupted_cleanly(dir_, SIGHUP); }
+
+// `scbt track -o - | head -n 2`: the results stream out line by line while tracking goes on; when
+// the reader leaves, the run ends cleanly (exit code 141) with the CSV complete up to that frame.
+TEST_F(CliRunTest, StdoutStreamsLiveAndAClosedPipeEndsTheRunCleanly) {
+  const int frames = 4000;
+  lengthen_sequence(dir_, frames);
+  int pipe_ends[2];
+  ASSERT_EQ(::pipe(pipe_ends), 0);
+  const pid_t child = ::fork();
+  ASSERT_GE(child, 0);
+  if (child == 0) {
+    const std::string err = (dir_ / "stderr.txt").string();
+    if (!std::freopen(err.c_str(), "w", stderr)) ::_exit(127);
+    if (::chdir(dir_.c_str()) != 0) ::_exit(127);
+    ::dup2(pipe_ends[1], STDOUT_FILENO);
+    ::close(pipe_ends[0]);
+    ::close(pipe_ends[1]);
+    ::execl(SCBT_BINARY, SCBT_BINARY, "track", "seq", "--init", "init.txt", "-o", "-", "-q",
+            "--csv", "out.csv", static_cast<char*>(nullptr));
+    ::_exit(127);
+  }
+  ::close(pipe_ends[1]);
+  std::string received;
+  char c = 0;
+  while (std::count(received.begin(), received.end(), '\n') < 2 &&
+         ::read(pipe_ends[0], &c, 1) == 1) {
+    received += c;
+  }
+  int status = 0;
+  EXPECT_EQ(::waitpid(child, &status, WNOHANG), 0) << "the lines came only at the end of the run";
+  ::close(pipe_ends[0]);  // the reader leaves
+  ASSERT_EQ(::waitpid(child, &status, 0), child);
+  ASSERT_TRUE(WIFEXITED(status)) << "killed by signal " << WTERMSIG(status);
+  const std::string err = read_file(dir_ / "stderr.txt");
+  EXPECT_EQ(WEXITSTATUS(status), 141) << err;
+  const std::vector<std::string> lines = read_text_lines_of(received);
+  ASSERT_EQ(lines.size(), 2u);
+  for (const std::string& line : lines) {
+    Polygon polygon;
+    std::string error;
+    EXPECT_TRUE(try_parse_polygon_line(line, &polygon, &error)) << line << ": " << error;
+  }
+  const std::string needle = "went away (EPIPE) after frame ";
+  const size_t at = err.find(needle);
+  ASSERT_NE(at, std::string::npos) << err;
+  const int reached = std::atoi(err.c_str() + at + needle.size());
+  EXPECT_GE(reached, 2);
+  EXPECT_LT(reached, frames);
+  EXPECT_EQ(static_cast<int>(read_text_lines((dir_ / "out.csv").string()).size()), reached);
+  expect_no_temporary_files(dir_);
+}
 
 }  // namespace
 }  // namespace scbt

@@ -13,8 +13,9 @@
 
 #include "scbt/app/progress.h"
 #include "scbt/geometry/polygon_io.h"
-#include "scbt/io/atomic_file.h"
 #include "scbt/io/frame_source.h"
+#include "scbt/io/output_set.h"
+#include "scbt/io/same_file.h"
 #include "scbt/render/annotate.h"
 
 namespace scbt {
@@ -26,7 +27,9 @@ volatile std::sig_atomic_t g_stop_signal = 0;
 
 extern "C" void on_stop_signal(int signal_number) { g_stop_signal = signal_number; }
 
-// Installs on_stop_signal for SIGINT and SIGTERM for its lifetime, then restores the old handlers.
+// Installs on_stop_signal for SIGINT, SIGTERM and SIGHUP (a closed terminal) for its lifetime
+// and ignores SIGPIPE, so that a reader of standard output going away shows as EPIPE
+// (OutputSet::reader_gone) and ends the run cleanly; then restores the old handlers.
 class StopSignalScope {
  public:
   explicit StopSignalScope(bool enabled) : enabled_(enabled) {
@@ -37,11 +40,18 @@ class StopSignalScope {
     sigemptyset(&action.sa_mask);
     sigaction(SIGINT, &action, &old_int_);
     sigaction(SIGTERM, &action, &old_term_);
+    sigaction(SIGHUP, &action, &old_hup_);
+    struct sigaction ignore {};
+    ignore.sa_handler = SIG_IGN;
+    sigemptyset(&ignore.sa_mask);
+    sigaction(SIGPIPE, &ignore, &old_pipe_);
   }
   ~StopSignalScope() {
     if (!enabled_) return;
     sigaction(SIGINT, &old_int_, nullptr);
     sigaction(SIGTERM, &old_term_, nullptr);
+    sigaction(SIGHUP, &old_hup_, nullptr);
+    sigaction(SIGPIPE, &old_pipe_, nullptr);
   }
   StopSignalScope(const StopSignalScope&) = delete;
   StopSignalScope& operator=(const StopSignalScope&) = delete;
@@ -50,6 +60,8 @@ class StopSignalScope {
   bool enabled_;
   struct sigaction old_int_ {};
   struct sigaction old_term_ {};
+  struct sigaction old_hup_ {};
+  struct sigaction old_pipe_ {};
 };
 
 const char* signal_name(int signal_number) {
@@ -58,15 +70,11 @@ const char* signal_name(int signal_number) {
       return "SIGINT";
     case SIGTERM:
       return "SIGTERM";
+    case SIGHUP:
+      return "SIGHUP";
     default:
       return "a signal";
   }
-}
-
-int video_fourcc(const std::string& path) {
-  const std::string ext = fs::path(path).extension().string();
-  if (ext == ".mp4" || ext == ".m4v") return cv::VideoWriter::fourcc('m', 'p', '4', 'v');
-  return cv::VideoWriter::fourcc('M', 'J', 'P', 'G');
 }
 
 void write_csv_header(std::ostream& csv) {
@@ -148,9 +156,29 @@ TrackSummary run_track(const TrackRunOptions& options, std::ostream& log) {
     throw std::invalid_argument("--max-frames must be >= 0, got " +
                                 std::to_string(options.max_frames));
   }
+  // Before anything is read or written: no output may overwrite an input or another output.
+  std::vector<NamedPath> inputs = {{"INPUT", options.input}};
+  if (!options.init_file.empty()) inputs.push_back({"--init", options.init_file});
+  std::vector<NamedPath> outputs = {{"-o", options.output}};
+  if (!options.csv.empty()) outputs.push_back({"--csv", options.csv});
+  if (!options.video.empty()) outputs.push_back({"--video", options.video});
+  std::vector<NamedPath> output_folders;
+  if (!options.frames_out.empty()) output_folders.push_back({"--frames-out", options.frames_out});
+  check_no_overwrite(inputs, outputs, output_folders);
+
   const Polygon initial = load_initial_polygon(options);
   Tracker tracker(options.tracker);
+  const StopSignalScope signal_scope(options.handle_signals);
   std::unique_ptr<FrameSource> source = open_frame_source(options.input);
+  // Every output is classified and opened before the first frame (a folder, a missing folder or
+  // a video name without a container fails here); none replaces an old file before commit().
+  OutputSet output_set;
+  OutputFile& results = output_set.add_file(options.output);
+  OutputFile* csv = options.csv.empty() ? nullptr : &output_set.add_file(options.csv);
+  VideoOutput* video =
+      options.video.empty() ? nullptr : &output_set.add_video(options.video, source->fps());
+  FrameFolderOutput* frames_out =
+      options.frames_out.empty() ? nullptr : &output_set.add_frame_folder(options.frames_out);
 
   cv::Mat frame;
   if (!source->read(&frame)) throw std::runtime_error(options.input + ": no frames");
@@ -166,53 +194,28 @@ TrackSummary run_track(const TrackRunOptions& options, std::ostream& log) {
   const bool annotate = !options.video.empty() || !options.frames_out.empty();
   tracker.set_keep_debug(annotate);
 
-  AtomicFile results(options.output);
-  std::unique_ptr<AtomicFile> csv;
-  if (!options.csv.empty()) {
-    csv = std::make_unique<AtomicFile>(options.csv);
-    write_csv_header(csv->stream());
-  }
-  std::unique_ptr<cv::VideoWriter> video;
-  std::string video_temporary;
-  if (!options.frames_out.empty()) fs::create_directories(options.frames_out);
-
+  if (csv) write_csv_header(csv->stream());
   results.stream() << format_polygon_line(initial) << '\n';
+  output_set.end_record();
   TrackSummary summary;
   summary.frames = 1;
   summary.expected_frames = source->frame_count();
-  const StopSignalScope signal_scope(options.handle_signals);
   double total_ms = 0.0;
   ProgressBar progress(log, "tracking", source->frame_count(), !options.quiet);
 
   auto emit_annotation = [&](const cv::Mat& image, int index) {
-    if (!options.video.empty()) {
-      if (!video) {
-        // The writer picks its container from the extension, so the temporary keeps it.
-        const fs::path path(options.video);
-        video_temporary = (path.parent_path() / (".tmp-" + path.filename().string())).string();
-        const double fps = source->fps() > 0 ? source->fps() : 30.0;
-        video = std::make_unique<cv::VideoWriter>(video_temporary, video_fourcc(options.video), fps,
-                                                  image.size());
-        if (!video->isOpened()) throw std::runtime_error(options.video + ": cannot write video");
-      }
-      video->write(image);
-    }
-    if (!options.frames_out.empty()) {
-      char name[32];
-      std::snprintf(name, sizeof(name), "%04d.jpg", index);
-      const std::string path = (fs::path(options.frames_out) / name).string();
-      if (!cv::imwrite(path, image)) throw std::runtime_error(path + ": cannot write image");
-    }
+    if (video) video->write(image);
+    if (frames_out) frames_out->write(index, image);
   };
 
-  try {
+  {
     if (annotate) {
       TrackResult first;
       first.boundary = initial;
       emit_annotation(annotate_frame(frame, {}, first, "frame 1: initial boundary"), 1);
     }
     while (options.max_frames <= 0 || summary.frames < options.max_frames) {
-      if (g_stop_signal != 0) break;
+      if (g_stop_signal != 0 || output_set.reader_gone()) break;
       // A frame that cannot be decoded or does not fit (size, pixel format) is bad: reported,
       // and either held (its line repeats the boundary) or fatal, by policy.
       std::string bad;
@@ -233,12 +236,14 @@ TrackSummary run_track(const TrackRunOptions& options, std::ostream& log) {
         }
         ++summary.bad_frames;
         if (!options.quiet) log << '\n';
-        log << "scbt: warning: " << bad << " (frame " << summary.frames << "); boundary held\n";
+        log << "scbt: warning: " << printable(bad) << " (frame " << summary.frames
+            << "); boundary held\n";
         r = TrackResult();
         r.boundary = tracker.boundary();
         r.held = true;
         results.stream() << format_polygon_line(r.boundary) << '\n';
         if (csv) write_csv_row(csv->stream(), summary.frames, r, "bad frame: " + bad);
+        output_set.end_record();
         progress.update(summary.frames);
         continue;
       }
@@ -258,17 +263,13 @@ TrackSummary run_track(const TrackRunOptions& options, std::ostream& log) {
                       r.area_similarity);
         emit_annotation(annotate_frame(frame, tracker.debug(), r, status), summary.frames);
       }
+      output_set.end_record();
       progress.update(summary.frames);
     }
-  } catch (...) {
-    if (video) {
-      video->release();
-      std::remove(video_temporary.c_str());
-    }
-    throw;
   }
   progress.finish(summary.frames);
   summary.stop_signal = g_stop_signal;
+  if (summary.stop_signal == 0 && output_set.reader_gone()) summary.stop_signal = SIGPIPE;
 
   if (summary.tracked > 0) {
     const double n = summary.tracked;
@@ -278,26 +279,28 @@ TrackSummary run_track(const TrackRunOptions& options, std::ostream& log) {
     summary.mean_edges /= n;
     summary.fps = total_ms > 0 ? 1000.0 * n / total_ms : 0.0;
   }
-  results.commit();
-  if (csv) csv->commit();
-  if (video) {
-    video->release();
-    fs::rename(video_temporary, options.video);
-  }
-  if (summary.stop_signal != 0) {
+  output_set.commit();
+  if (summary.stop_signal == SIGPIPE) {
+    log << "scbt: warning: the reader of a streamed output went away (EPIPE) after frame "
+        << summary.frames << "; the other outputs hold frames 1.." << summary.frames << "\n";
+  } else if (summary.stop_signal != 0) {
     log << "scbt: warning: interrupted by " << signal_name(summary.stop_signal) << " after frame "
         << summary.frames;
     if (summary.expected_frames > 0) log << " of " << summary.expected_frames;
-    log << "; " << options.output << " holds frames 1.." << summary.frames << "\n";
+    log << "; " << printable(options.output) << " holds frames 1.." << summary.frames << "\n";
+  }
+  if (summary.bad_frames > 0) {
+    log << "scbt: warning: " << summary.bad_frames << " bad frame(s) reported and held\n";
   }
   const bool cut_short = options.max_frames > 0 && summary.frames >= options.max_frames;
   if (summary.stop_signal == 0 && !cut_short && summary.expected_frames > 0 &&
       summary.frames < summary.expected_frames) {
-    log << "scbt: warning: " << options.input << " ended after frame " << summary.frames
-        << " of the " << summary.expected_frames << " it announced\n";
-  }
-  if (summary.bad_frames > 0) {
-    log << "scbt: warning: " << summary.bad_frames << " bad frame(s) reported and held\n";
+    // Frames lost without a trace (no timestamp gap) cannot be placed: later lines may be early.
+    // They count as bad frames (exit code 3).
+    log << "scbt: warning: " << printable(options.input) << " gave " << summary.frames << " of the "
+        << summary.expected_frames
+        << " frames it announced (it ended early, or frames were lost in decoding)\n";
+    summary.bad_frames += summary.expected_frames - summary.frames;
   }
   if (!options.quiet) log << format_summary(summary);
   return summary;

@@ -13,10 +13,12 @@ namespace scbt::cli {
 
 // Exit codes of every command (documented in the README):
 constexpr int kExitOk = 0;
-constexpr int kExitFailure = 1;        // bad input data, unreadable input, unwritable output
-constexpr int kExitUsage = 2;          // bad command line: unknown option, value out of range
-constexpr int kExitBadFrames = 3;      // finished, but some frames were bad and held
-constexpr int kExitInterrupted = 128;  // + signal number: stopped by SIGINT (130) / SIGTERM (143)
+constexpr int kExitFailure = 1;    // bad input data, unreadable input, unwritable output
+constexpr int kExitUsage = 2;      // bad command line: unknown option, value out of range
+constexpr int kExitBadFrames = 3;  // finished, but some frames were bad and held
+// + signal number: stopped by SIGHUP (129), SIGINT (130), SIGTERM (143), or by the reader of a
+// streamed output going away (EPIPE: 141, as SIGPIPE).
+constexpr int kExitInterrupted = 128;
 
 // Prints "scbt: error: MESSAGE" as one line on stderr and returns `exit_code`.
 int report_error(const std::string& message, int exit_code);

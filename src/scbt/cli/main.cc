@@ -1,12 +1,16 @@
 // scbt: the command-line front end. Each subcommand only declares its options and calls the
 // library function that does the work (src/scbt/app), so tests can call the same code.
 #include <CLI/CLI.hpp>
+#include <csignal>
 #include <exception>
 #include <iostream>
 
 #include "scbt/cli/commands.h"
 
 int main(int argc, char** argv) {
+  // A closed pipe on standard output is EPIPE, not death: `scbt track -o - | head` ends cleanly
+  // with its outputs complete (exit code 141, like the shell's for SIGPIPE).
+  std::signal(SIGPIPE, SIG_IGN);
   CLI::App app{"scbt: real-time salient closed boundary tracking via line segment grouping"};
   app.require_subcommand(1);
   app.set_version_flag("--version", "scbt 0.1.0");

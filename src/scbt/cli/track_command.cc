@@ -3,17 +3,18 @@
 
 #include "scbt/app/track_run.h"
 #include "scbt/cli/commands.h"
+#include "scbt/io/output_target.h"
 
 namespace scbt::cli {
 
 int report_error(const std::string& message, int exit_code) {
-  // Always one line, so logs and scripts can take the last line of stderr as the reason.
+  // Always one line, so logs and scripts can take the last line of stderr as the reason: a
+  // trailing newline is dropped, any other control character (in a file name) shown escaped.
   std::string line = message;
-  for (char& c : line) {
-    if (c == '\n' || c == '\r') c = ' ';
+  while (!line.empty() && (line.back() == '\n' || line.back() == '\r' || line.back() == ' ')) {
+    line.pop_back();
   }
-  while (!line.empty() && line.back() == ' ') line.pop_back();
-  std::cerr << "scbt: error: " << line << std::endl;
+  std::cerr << "scbt: error: " << printable(line) << std::endl;
   return exit_code;
 }
 
