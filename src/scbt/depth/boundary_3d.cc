@@ -22,19 +22,12 @@ void check_depth_image(const cv::Mat& depth) {
         std::to_string(depth.type()));
 }
 
-// The circle through the lifted vertices when there are enough of them, else through every
-// lifted sample; kept only if all lifted samples lie near it (a rectangle's corners alone fit
-// a circle exactly).
-CircleFit fit_rim_circle(const std::vector<BoundarySample>& samples,
-                         const std::vector<Eigen::Vector3d>& curve, const Eigen::Vector3d& origin,
+// The circle through every lifted sample (they are spread evenly along the boundary), kept only
+// if they all lie near it.
+CircleFit fit_rim_circle(const std::vector<Eigen::Vector3d>& curve, const Eigen::Vector3d& origin,
                          const Eigen::Vector3d& normal, const DepthOptions& options) {
-  std::vector<Eigen::Vector3d> vertices;
-  for (std::size_t i = 0; i < samples.size(); ++i)
-    if (samples[i].vertex && curve[i].allFinite()) vertices.push_back(curve[i]);
-  CircleFit circle = fit_circle_in_plane(vertices.size() >= 8 ? vertices : curve, origin, normal);
-  if (!circle.found) return circle;
-  circle.rms = circle_rms(circle, curve);
-  circle.found = circle.rms <= options.circle_max_relative_rms * circle.radius;
+  CircleFit circle = fit_circle_in_plane(curve, origin, normal);
+  circle.found = circle.found && circle.rms <= options.circle_max_relative_rms * circle.radius;
   return circle;
 }
 
@@ -80,7 +73,7 @@ Boundary3d lift_boundary_to_3d(const Polygon& boundary, const cv::Mat& depth,
   result.rms = plane.rms;
   for (std::size_t i = 0; i < n; ++i) intersect_ray_with_plane(plane, rays[i], &result.curve[i]);
   result.centroid = closed_curve_centroid(result.curve);
-  result.circle = fit_rim_circle(samples, result.curve, result.centroid, plane.normal, options);
+  result.circle = fit_rim_circle(result.curve, result.centroid, plane.normal, options);
   result.valid = result.n_valid >= options.min_valid_points &&
                  result.n_valid >= options.min_valid_fraction * static_cast<double>(n) &&
                  result.centroid.allFinite();

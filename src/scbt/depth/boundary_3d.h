@@ -8,9 +8,9 @@
 // rest along the rays of the pixels they were read at; fit a robust plane (plane_fit.h); intersect
 // every sample's ray with that plane (so samples whose depth is missing still count, with less
 // noise than their own depth); take the arc-length centroid of that closed curve
-// (curve_centroid.h); fit a circle to the lifted vertices (segment endpoints lie on the contour,
-// whereas the edges between them are chords that cut inside it) and report it when every lifted
-// sample is within circle_max_relative_rms of it.
+// (curve_centroid.h); fit a circle to all lifted samples and report it when their RMS distance
+// to it is at most circle_max_relative_rms of its radius (all samples, not only the vertices: a
+// tracked vertex is the end of a least-squares segment, which lies outside an arc).
 #pragma once
 
 #include <Eigen/Core>

@@ -18,7 +18,7 @@ void collect_valid_depths(const cv::Mat& depth, const BoundarySample& sample,
       if (x < 0 || y < 0 || x >= depth.cols || y >= depth.rows) continue;
       const double z = static_cast<double>(depth.ptr<T>(y)[x]) * scale;
       if (z >= options.min_depth && z <= options.max_depth)
-        out->push_back({z, static_cast<float>(x), static_cast<float>(y)});
+        out->push_back({z, static_cast<float>(x), static_cast<float>(y), k});
     }
   }
 }
@@ -30,11 +30,11 @@ double median_of_sorted(const DepthPixel* first, const DepthPixel* last) {
 }
 
 const DepthPixel* lower(const DepthPixel* first, const DepthPixel* last, double z) {
-  return std::lower_bound(first, last, DepthPixel{z, 0.f, 0.f});
+  return std::lower_bound(first, last, DepthPixel{z, 0.f, 0.f, 0});
 }
 
 const DepthPixel* upper(const DepthPixel* first, const DepthPixel* last, double z) {
-  return std::upper_bound(first, last, DepthPixel{z, 0.f, 0.f});
+  return std::upper_bound(first, last, DepthPixel{z, 0.f, 0.f, 0});
 }
 
 }  // namespace
@@ -65,9 +65,11 @@ SurfaceDepth nearest_surface_depth(const cv::Mat& depth, const BoundarySample& s
     const double centre = median_of_sorted(begin + i, upper(begin + i, end, z[i].z + tolerance));
     const DepthPixel* lo = lower(begin, end, centre - tolerance);
     const DepthPixel* hi = upper(begin, end, centre + tolerance);
-    double sum_z = 0.0, sum_x = 0.0, sum_y = 0.0;
-    for (const DepthPixel* p = lo; p != hi; ++p) sum_z += p->z, sum_x += p->x, sum_y += p->y;
-    const double count = static_cast<double>(hi - lo);
+    int nearest_row = options.window_length;
+    for (const DepthPixel* p = lo; p != hi; ++p) nearest_row = std::min(nearest_row, p->row);
+    double sum_z = 0.0, sum_x = 0.0, sum_y = 0.0, count = 0.0;
+    for (const DepthPixel* p = lo; p != hi; ++p)
+      if (p->row == nearest_row) sum_z += p->z, sum_x += p->x, sum_y += p->y, count += 1.0;
     surface.z = sum_z / count;
     surface.pixel = Point(sum_x / count, sum_y / count);
     return surface;

@@ -6,9 +6,11 @@
 // rim, is farther). So the window's valid depths are grouped into surfaces (depths within the
 // noise tolerance of each other) and the median of the nearest surface with enough pixels is
 // taken: an isolated too-near outlier, mixed pixels and the farther inside are all passed over.
-// The surface's pixels lie a few pixels inside the boundary; their mean position is returned
-// too, so the 3-D point is lifted where its depth was measured (on a tilted rim, lifting it on
-// the boundary's own ray would flatten the fitted plane).
+// Of the surface's pixels only those of the window row nearest the boundary are averaged (a
+// bowl's inner wall just past its lip can be within the tolerance of the lip's depth, but is
+// not on the rim), and their mean position is returned with the depth, so the 3-D point is
+// lifted where its depth was measured (on a tilted rim, lifting it on the boundary's own ray
+// would flatten the fitted plane).
 #pragma once
 
 #include <opencv2/core/mat.hpp>
@@ -25,12 +27,13 @@ double surface_tolerance(const DepthOptions& options, double z);
 
 struct SurfaceDepth {
   double z = 0.0;  // metres; 0 when the window has no surface of min_surface_pixels pixels
-  Point pixel;     // mean image position of the surface's pixels
+  Point pixel;     // mean image position of the surface's pixels that were averaged
 };
 
 struct DepthPixel {
   double z;
   float x, y;
+  int row;  // how far inside the boundary: 0 = the window's first row
   bool operator<(const DepthPixel& other) const { return z < other.z; }
 };
 

@@ -17,10 +17,12 @@ struct PlaneFit {
   int n_inliers = 0;
 };
 
-// Least-squares plane (the smallest principal axis of the points' covariance) refitted
-// options.plane_iterations times on the points within max(surface_tolerance(z), 3 * 1.4826 *
-// MAD of the distances) of the previous fit: the noise model bounds what a flat rim needs, the
-// MAD lets a bent one keep its points. Non-finite points are ignored.
+// A least-median plane through evenly spaced triples (robust to a coherent wrong stretch of
+// the rim), then least-squares planes (the smallest principal axis of the covariance) refitted
+// up to options.plane_iterations times on the points within max(surface_tolerance(z), 3 * 1.4826
+// * median distance) of the previous plane: the noise model bounds what a flat rim needs, the
+// median lets a bent one keep its points. Points are in boundary order; non-finite ones are
+// ignored.
 PlaneFit fit_plane_robust(const std::vector<Eigen::Vector3d>& points, const DepthOptions& options);
 
 // Where the camera ray `ray` (a point at depth z is z * ray) meets the plane; false when it

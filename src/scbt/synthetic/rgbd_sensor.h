@@ -1,0 +1,34 @@
+// What a real depth sensor does to an exact depth image: noise growing with z^2 (Khoshelham &
+// Elberink 2012 measured about 1.5 mm * z^2 for the Kinect), mixed ("flying") pixels across
+// depth edges, holes, and a lost stretch of the object's outline (depth often fails right at
+// edges), then quantisation to 16-bit units.
+#pragma once
+
+#include <cstdint>
+#include <opencv2/core/mat.hpp>
+
+#include "scbt/geometry/polygon.h"
+
+namespace scbt {
+
+struct DepthSensorOptions {
+  double depth_scale = 0.001;          // metres per unit of the 16-bit output
+  double noise_at_1m = 0.0016;         // sigma(z) = noise_at_1m * z^2 metres
+  double edge_jump = 0.02;             // a step above this between neighbours is a depth edge (m)
+  double mixed_pixel_share = 0.7;      // share of depth-edge pixels reading a mix of both sides
+  int hole_blobs = 6;                  // random elliptic holes (3-15 px) anywhere in the image
+  double outline_missing_share = 0.2;  // share of the outline's length whose depth is lost,
+  int outline_missing_pieces = 3;      // in this many arcs at random places,
+  double outline_missing_width = 8.0;  // this many pixels either side of the outline
+  std::uint32_t seed = 1;
+
+  void check() const;  // throws std::invalid_argument naming the first bad value
+};
+
+// `clean_depth` is CV_32FC1 metres (0 = nothing); `outline` the object's outline in pixels.
+// Returns CV_16UC1 in units of depth_scale, 0 where depth is missing; deterministic per
+// (seed, frame_index).
+cv::Mat apply_depth_sensor(const cv::Mat& clean_depth, const Polygon& outline,
+                           const DepthSensorOptions& options, int frame_index = 0);
+
+}  // namespace scbt
