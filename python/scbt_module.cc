@@ -16,6 +16,7 @@
 #include <string>
 #include <vector>
 
+#include "depth_bindings.h"
 #include "scbt/choice/boundary_choice.h"
 #include "scbt/cycles/bdsp.h"
 #include "scbt/eval/alignment_error.h"
@@ -688,4 +689,6 @@ PYBIND11_MODULE(scbt, m) {
       py::arg("polygon"),
       "Raises ValueError unless the polygon can serve as a boundary (finite, >= 3 distinct\n"
       "vertices, non-zero area, not self-crossing).");
+
+  register_depth(m);
 }
