@@ -26,7 +26,13 @@ void check_depth_image(const cv::Mat& depth) {
 // if they all lie near it.
 CircleFit fit_rim_circle(const std::vector<Eigen::Vector3d>& curve, const Eigen::Vector3d& origin,
                          const Eigen::Vector3d& normal, const DepthOptions& options) {
-  CircleFit circle = fit_circle_in_plane(curve, origin, normal);
+  // The algebraic fit first: a rim far from circular (a box) is told apart without iterating.
+  CircleFit circle = fit_circle_in_plane(curve, origin, normal, 0);
+  if (!circle.found || circle.rms > 2.0 * options.circle_max_relative_rms * circle.radius) {
+    circle.found = false;
+    return circle;
+  }
+  circle = fit_circle_in_plane(curve, origin, normal);
   circle.found = circle.found && circle.rms <= options.circle_max_relative_rms * circle.radius;
   return circle;
 }

@@ -17,7 +17,8 @@ void plane_basis(const Eigen::Vector3d& normal, Eigen::Vector3d* u, Eigen::Vecto
 }  // namespace
 
 CircleFit fit_circle_in_plane(const std::vector<Eigen::Vector3d>& points,
-                              const Eigen::Vector3d& origin, const Eigen::Vector3d& normal) {
+                              const Eigen::Vector3d& origin, const Eigen::Vector3d& normal,
+                              int iterations) {
   CircleFit circle;
   Eigen::Vector3d u, v;
   plane_basis(normal, &u, &v);
@@ -48,7 +49,7 @@ CircleFit fit_circle_in_plane(const std::vector<Eigen::Vector3d>& points,
   double radius = std::sqrt(radius_sq);
 
   // Gauss-Newton on r_i = |q_i - c| - r.
-  for (int iteration = 0; iteration < 10; ++iteration) {
+  for (int iteration = 0; iteration < iterations; ++iteration) {
     Eigen::Matrix3d jtj = Eigen::Matrix3d::Zero();
     Eigen::Vector3d jtr = Eigen::Vector3d::Zero();
     for (const Eigen::Vector2d& q : flat) {

@@ -16,9 +16,11 @@ struct CircleFit {
 
 // Circle in the plane with unit `normal` through `origin`: the points are projected onto the
 // plane, an algebraic (Kasa) fit starts Gauss-Newton on the geometric distances
-// sum (|p - c| - r)^2. Non-finite points are ignored.
+// sum (|p - c| - r)^2 (up to `iterations` steps; 0 = the algebraic fit alone). Non-finite points
+// are ignored.
 CircleFit fit_circle_in_plane(const std::vector<Eigen::Vector3d>& points,
-                              const Eigen::Vector3d& origin, const Eigen::Vector3d& normal);
+                              const Eigen::Vector3d& origin, const Eigen::Vector3d& normal,
+                              int iterations = 10);
 
 // RMS of |point - centre| - radius for the points projected onto the circle's plane.
 double circle_rms(const CircleFit& circle, const std::vector<Eigen::Vector3d>& points);

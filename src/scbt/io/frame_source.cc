@@ -220,6 +220,10 @@ std::vector<std::string> list_numbered_images(const std::string& folder) {
   return files;
 }
 
+std::unique_ptr<FrameSource> open_image_list_source(std::vector<std::string> files) {
+  return std::make_unique<ImageFolderSource>(std::move(files));
+}
+
 std::unique_ptr<FrameSource> open_frame_source(const std::string& input) {
   if (all_digits(input) && !fs::exists(input)) {
     cv::VideoCapture camera(std::stoi(input));

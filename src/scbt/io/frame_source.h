@@ -35,4 +35,7 @@ std::unique_ptr<FrameSource> open_frame_source(const std::string& input);
 // like an image (0001.jpg) is not a regular file.
 std::vector<std::string> list_numbered_images(const std::string& folder);
 
+// The frames of a given list of image files, in that order (a TUM RGB-D rgb.txt's list).
+std::unique_ptr<FrameSource> open_image_list_source(std::vector<std::string> files);
+
 }  // namespace scbt
