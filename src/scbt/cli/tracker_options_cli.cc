@@ -26,6 +26,11 @@ void add_tracker_options(CLI::App* command, TrackerOptions* options, std::string
                    "When lost, search again where image motion moved the boundary (true/false)")
       ->capture_default_str();
   command
+      ->add_option("--predict-motion", options->predict_motion,
+                   "Search where the boundary's last motion (constant velocity) predicts it; "
+                   "when nothing passes the area gate, also with its predicted growth (true/false)")
+      ->capture_default_str();
+  command
       ->add_option("--seed-stride", options->bdsp.seed_stride,
                    "BDSP seeds every Nth detected segment (the paper: 2)")
       ->capture_default_str();
