@@ -124,9 +124,9 @@ void VideoOutput::finish() {
                              " frames (disk full?)");
   }
   if (!last_readable) {
-    throw std::runtime_error(printable(target_.path) + ": write failed: the finished video's last " +
-                             "frame (" + std::to_string(frames_) +
-                             ") cannot be read back (disk full?)");
+    throw std::runtime_error(printable(target_.path) +
+                             ": write failed: the finished video's last " + "frame (" +
+                             std::to_string(frames_) + ") cannot be read back (disk full?)");
   }
 }
 
