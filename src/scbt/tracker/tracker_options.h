@@ -23,7 +23,7 @@ struct TrackerOptions {
   bool recover_by_motion = true;
   // Search around where the boundary's recent motion (constant velocity) predicts it, rather than
   // where it was in the last frame.
-  bool predict_motion = true;
+  bool predict_motion = false;
   // Per-frame EDLines thresholds from the boundary's contrast and the image noise (edlines only).
   AdaptiveThresholdOptions adaptive_thresholds;
   BdspOptions bdsp;
