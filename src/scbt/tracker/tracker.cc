@@ -58,7 +58,7 @@ Tracker::Tracker(const TrackerOptions& options)
 
 Tracker::Tracker(const TrackerOptions& options,
                  const std::function<std::unique_ptr<CycleStage>()>& make_cycle_stage)
-    : options_(options) {
+    : options_(options), monitor_(options.loss) {
   options_.check();
   detector_ = make_line_detector(options_.detector);
   for (Attempt& a : attempts_) a.cycles = make_cycle_stage();
@@ -89,9 +89,13 @@ void Tracker::init(const cv::Mat& frame, const Polygon& polygon) {
   frame_size_ = frame.size();
   motion_.reset();
   motion_.update(boundary_);
+  monitor_.reset(polygon, sample_edges(polygon, reference_gray_, {0, 0}, 0.0).inside_level);
+  pending_.clear();
+  pending_matches_ = 0;
 }
 
-void Tracker::attempt(const cv::Mat& frame, const Polygon& prior, Attempt* a) {
+void Tracker::attempt(const cv::Mat& frame, const Polygon& prior, Attempt* a,
+                      double min_similarity) {
   a->num_dropped = 0;
   a->choice.reset();
   const Clock::time_point line_start = Clock::now();
@@ -145,8 +149,8 @@ void Tracker::attempt(const cv::Mat& frame, const Polygon& prior, Attempt* a) {
   // them for the kept segments (unless the cap reordered them).
   KnownSegmentDistances known{&a->kept, &a->kept_distances};
   const KnownSegmentDistances* known_if_any = a->num_dropped == 0 ? &known : nullptr;
-  a->choice = a->cycles->choose(&chooser_, a->graph, prior, options_.min_area_similarity,
-                                options_.cost_tolerance, known_if_any);
+  a->choice = a->cycles->choose(&chooser_, a->graph, prior, min_similarity, options_.cost_tolerance,
+                                known_if_any);
   a->stages.choice_ms = lap();
   a->grouping_ms =
       a->stages.filter_ms + a->stages.graph_ms + a->stages.search_ms + a->stages.choice_ms;
@@ -160,6 +164,7 @@ TrackResult Tracker::track(const cv::Mat& frame) {
                                 "x" + std::to_string(frame_size_.height) + " to " +
                                 std::to_string(frame.cols) + "x" + std::to_string(frame.rows));
   }
+  if (monitor_.state() == TrackState::kLost) return track_lost(frame);
   TrackResult result;
   Attempt* a = &attempts_[0];
   if (options_.predict_motion) {
@@ -167,7 +172,7 @@ TrackResult Tracker::track(const cv::Mat& frame) {
   } else {
     predicted_ = boundary_;
   }
-  attempt(frame, predicted_, a);
+  attempt(frame, predicted_, a, options_.min_area_similarity);
   result.line_ms = a->line_ms;
   result.grouping_ms = a->grouping_ms;
   result.stages = a->stages;
@@ -179,7 +184,7 @@ TrackResult Tracker::track(const cv::Mat& frame) {
       !(area_similarity(motion_.predicted_area_ratio(), 1.0) > options_.min_area_similarity)) {
     motion_.predict(boundary_, /*with_scale=*/true, &predicted_);
     Attempt* retry = &attempts_[1];
-    attempt(frame, predicted_, retry);
+    attempt(frame, predicted_, retry, options_.min_area_similarity);
     add_retry_times(*retry, &result);
     if (retry->choice) a = retry;
   }
@@ -200,7 +205,7 @@ TrackResult Tracker::track(const cv::Mat& frame) {
       Polygon moved = boundary_;
       for (Point& p : moved) p += motion->shift;
       Attempt* retry = &attempts_[1];
-      attempt(frame, moved, retry);
+      attempt(frame, moved, retry, options_.min_area_similarity);
       add_retry_times(*retry, &result);
       if (retry->choice) {
         a = retry;
@@ -210,7 +215,11 @@ TrackResult Tracker::track(const cv::Mat& frame) {
   }
 
   if (a->choice) {
-    boundary_ = a->cycles->polygon(a->graph, a->choice->index);
+    Polygon chosen = a->cycles->polygon(a->graph, a->choice->index);
+    // Before the grey window is handed to the motion reference, and against the previous boundary.
+    result.evidence = evidence_of(*a, chosen, boundary_);
+    result.confidence = options_.confidence(result.evidence);
+    boundary_ = std::move(chosen);
     boundary_area_ = a->cycles->area(a->choice->index);
     result.cost = a->choice->cost;
     result.area_similarity = a->choice->similarity;
@@ -229,6 +238,12 @@ TrackResult Tracker::track(const cv::Mat& frame) {
   } else {
     result.held = true;
     motion_.update_held();
+  }
+  result.state = monitor_.update(boundary_, result.confidence, result.held, result.evidence);
+  if (result.state == TrackState::kLost) {
+    // No confident output while lost: back to the last confident boundary.
+    boundary_ = monitor_.last_confident();
+    boundary_area_ = area(boundary_);
   }
 
   result.boundary = boundary_;

@@ -11,6 +11,8 @@
 #include "scbt/graph/segment_graph.h"
 #include "scbt/tracker/cycle_stage.h"
 #include "scbt/tracker/motion_model.h"
+#include "scbt/tracker/reacquire.h"
+#include "scbt/tracker/track_state.h"
 #include "scbt/tracker/tracker_options.h"
 
 namespace scbt {
@@ -25,9 +27,15 @@ struct StageTimes {
 };
 
 struct TrackResult {
-  Polygon boundary;              // the tracked boundary (the previous one when held)
-  bool held = false;             // no admissible candidate: the previous boundary was kept
-  bool recovered = false;        // found again where image motion moved it (after a miss)
+  Polygon boundary;        // the tracked boundary (the previous one when held)
+  bool held = false;       // no admissible candidate: the previous boundary was kept
+  bool recovered = false;  // found again where image motion moved it (after a miss)
+  // How far to trust `boundary` (confidence.h; 0 when held or lost) and what that makes of the
+  // frame (track_state.h). While lost, `boundary` is the last confident one and `held` is set.
+  TrackState state = TrackState::kTracking;
+  double confidence = 0.0;
+  BoundaryEvidence evidence;     // what the confidence was computed from (defaults when held)
+  bool reacquired = false;       // the lost object was found again in this frame
   double cost = 0.0;             // grouping cost Γ of the chosen cycle (Eq. 1)
   double area_similarity = 0.0;  // Eq. 2 between the chosen cycle and the previous boundary
   int num_detected = 0;          // segments from the line detector
@@ -63,6 +71,11 @@ class Tracker {
   // Sets the initial boundary. Throws std::invalid_argument if the frame is empty or not 8-bit,
   // or the polygon is not a usable boundary (see check_boundary_polygon) or leaves the frame.
   void init(const cv::Mat& frame, const Polygon& polygon);
+  // Initialises from a box instead of a polygon: the most salient closed boundary inside it (the
+  // least-Γ cycle of the segments detected in the box, box_init.h). Returns that boundary.
+  // Throws std::invalid_argument for a bad frame or box, std::runtime_error when the box holds
+  // no closed boundary.
+  Polygon init_from_box(const cv::Mat& frame, const cv::Rect& box);
 
   // Tracks the boundary into `frame` (8-bit grey, BGR or BGRA). Requires init().
   TrackResult track(const cv::Mat& frame);
@@ -105,9 +118,21 @@ class Tracker {
     double grouping_ms = 0.0;
     StageTimes stages;
   };
-  void attempt(const cv::Mat& frame, const Polygon& prior, Attempt* a);
+  void attempt(const cv::Mat& frame, const Polygon& prior, Attempt* a, double min_similarity);
   static void add_retry_times(const Attempt& retry, TrackResult* result);
+  // The evidence (confidence.h) of `chosen`, the cycle attempt `a` chose around `previous`; the
+  // grey window gray_ must still be a's (tracker_lost.cc).
+  BoundaryEvidence evidence_of(const Attempt& a, const Polygon& chosen,
+                               const Polygon& previous) const;
+  // A frame while the object is lost: search for it, near its last position, then anywhere.
+  TrackResult track_lost(const cv::Mat& frame);
   Attempt attempts_[2];
+  LossMonitor monitor_;
+  Reacquirer reacquirer_;
+  cv::Mat search_gray_;  // the whole frame in grey, while lost
+  // A cycle that matched while lost, waiting for LossOptions::confirm_frames matches in a row.
+  Polygon pending_;
+  int pending_matches_ = 0;
   StableChooser chooser_;  // its buffers and distance cache are reused frame to frame
   bool keep_debug_ = false;
   TrackDebug debug_;

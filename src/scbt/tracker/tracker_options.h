@@ -4,6 +4,8 @@
 #include "scbt/cycles/bdsp.h"
 #include "scbt/lines/adaptive_thresholds.h"
 #include "scbt/lines/line_detector.h"
+#include "scbt/tracker/confidence.h"
+#include "scbt/tracker/track_state.h"
 
 namespace scbt {
 
@@ -30,6 +32,10 @@ struct TrackerOptions {
   // Bound on the work per frame: when more segments than this pass the distance filter, only the
   // longest are kept (TrackResult::num_dropped counts the rest). BDSP grows about quadratically.
   int max_segments = 1500;
+  // How the confidence of each frame's boundary is computed, and when the object counts as lost
+  // and is searched for (docs/loss-handling.md).
+  ConfidenceModel confidence;
+  LossOptions loss;
 
   // Throws std::invalid_argument naming the first bad value.
   void check() const;

@@ -1,0 +1,128 @@
+#include "scbt/tracker/reacquire.h"
+
+#include <algorithm>
+#include <cmath>
+#include <opencv2/imgproc.hpp>
+
+namespace scbt {
+namespace {
+
+constexpr int kOutlineSamples = 64;
+// Scales are tried in steps of this ratio: the search around a placement follows the outline
+// within the tracker's filter band, so a few per cent of size between steps is found anyway.
+constexpr double kScaleStep = 1.1;
+
+// Points every perimeter / kOutlineSamples along the closed outline, relative to `center`.
+std::vector<Point> outline_samples(const Polygon& outline, const Point& center) {
+  std::vector<Point> samples;
+  const size_t n = outline.size();
+  const double step = perimeter(outline) / kOutlineSamples;
+  size_t edge = 0;
+  double edge_start = 0.0;
+  double edge_length = cv::norm(outline[1 % n] - outline[0]);
+  for (int i = 0; i < kOutlineSamples; ++i) {
+    const double s = i * step;
+    while (s > edge_start + edge_length && edge + 1 < n) {
+      edge_start += edge_length;
+      ++edge;
+      edge_length = cv::norm(outline[(edge + 1) % n] - outline[edge]);
+    }
+    const double t = edge_length > 0.0 ? std::min(1.0, (s - edge_start) / edge_length) : 0.0;
+    samples.push_back(outline[edge] + t * (outline[(edge + 1) % n] - outline[edge]) - center);
+  }
+  return samples;
+}
+
+struct Scored {
+  double chamfer;
+  Point center;
+  double scale;
+};
+
+}  // namespace
+
+std::vector<Placement> Reacquirer::rank(const Polygon& outline,
+                                        const std::vector<Segment>& segments, cv::Size frame_size,
+                                        const PlacementOptions& options) {
+  std::vector<Placement> placements;
+  const double size = std::sqrt(area(outline));
+  if (segments.empty() || outline.size() < 3 || !(size > 0.0)) return placements;
+
+  edges_.create(frame_size, CV_8U);
+  edges_.setTo(255);
+  for (const Segment& s : segments) {
+    cv::line(edges_, cv::Point(cvRound(s.a.x), cvRound(s.a.y)),
+             cv::Point(cvRound(s.b.x), cvRound(s.b.y)), 0);
+  }
+  cv::distanceTransform(edges_, distance_, cv::DIST_L2, 3, CV_32F);
+  cv::min(distance_, options.cap, distance_);
+
+  const Point home = centroid(outline);
+  const std::vector<Point> samples = outline_samples(outline, home);
+  const int grid = std::clamp(static_cast<int>(size / 12.0), 2, 8);
+  const double max_chamfer = options.max_chamfer_share * options.cap;
+  const int w = frame_size.width, h = frame_size.height;
+
+  std::vector<Scored> scored;
+  for (double scale = options.min_scale; scale <= options.max_scale * 1.0001; scale *= kScaleStep) {
+    double min_x = 0, max_x = 0, min_y = 0, max_y = 0;
+    for (const Point& p : samples) {
+      min_x = std::min(min_x, scale * p.x), max_x = std::max(max_x, scale * p.x);
+      min_y = std::min(min_y, scale * p.y), max_y = std::max(max_y, scale * p.y);
+    }
+    // Centres from which up to (1 - min_inside_share) of the outline's extent leaves the frame.
+    const double spill = 1.0 - options.min_inside_share;
+    const double x0 = -min_x * options.min_inside_share,
+                 x1 = w - 1 - max_x * options.min_inside_share;
+    const double y0 = -min_y * options.min_inside_share,
+                 y1 = h - 1 - max_y * options.min_inside_share;
+    const int max_outside = static_cast<int>(spill * kOutlineSamples);
+    for (double cy = y0; cy <= y1; cy += grid) {
+      for (double cx = x0; cx <= x1; cx += grid) {
+        double sum = 0.0;
+        int outside = 0;
+        for (const Point& p : samples) {
+          const int x = cvRound(cx + scale * p.x), y = cvRound(cy + scale * p.y);
+          if (x < 0 || y < 0 || x >= w || y >= h) {
+            ++outside;
+            sum += options.cap;
+          } else {
+            sum += distance_.at<float>(y, x);
+          }
+        }
+        const double chamfer = sum / kOutlineSamples;
+        if (outside <= max_outside && chamfer <= max_chamfer) {
+          scored.push_back({chamfer, Point(cx, cy), scale});
+        }
+      }
+    }
+  }
+  std::sort(scored.begin(), scored.end(),
+            [](const Scored& a, const Scored& b) { return a.chamfer < b.chamfer; });
+
+  // Greedy picks, best first, apart from the ones already picked.
+  const double separation = 0.5 * size;
+  auto pick = [&](bool near, int count) {
+    for (const Scored& s : scored) {
+      if (count <= 0) return;
+      const bool is_near = cv::norm(s.center - home) <= size;
+      if (near && !is_near) continue;
+      bool apart = true;
+      for (const Placement& p : placements) {
+        apart = apart && cv::norm(centroid(p.outline) - s.center) >= separation;
+      }
+      if (!apart) continue;
+      Placement placement;
+      placement.chamfer = s.chamfer;
+      placement.near = is_near;
+      for (const Point& v : outline) placement.outline.push_back(s.center + (v - home) * s.scale);
+      placements.push_back(std::move(placement));
+      --count;
+    }
+  };
+  pick(true, options.near_tries);
+  pick(false, options.frame_tries);
+  return placements;
+}
+
+}  // namespace scbt

@@ -1,0 +1,50 @@
+// Finding a lost object again: where in the frame could the last confident boundary be? Places
+// of its outline (translated, at a few scales) are ranked by chamfer distance to the frame's line
+// segments, first near where the object was, then over the whole frame. The tracker then runs
+// its ordinary search around each place and keeps a cycle only if its shape matches
+// (track_state.h, LossOptions).
+#pragma once
+
+#include <opencv2/core/mat.hpp>
+#include <vector>
+
+#include "scbt/geometry/polygon.h"
+
+namespace scbt {
+
+struct Placement {
+  Polygon outline;       // the template moved (and scaled) there: the prior of a search
+  double chamfer = 0.0;  // mean distance (pixels, capped) from the outline's samples to a segment
+  bool near = false;     // within the near region of the last position
+};
+
+struct PlacementOptions {
+  double min_scale = 0.75;
+  double max_scale = 1.33;
+  // Distances beyond this count as this (pixels): a missing piece of outline costs a bounded
+  // amount. The tracker passes half its filter distance.
+  double cap = 10.0;
+  // Placements worse than this share of the cap are not worth a search.
+  double max_chamfer_share = 0.8;
+  // Placements are tried with at least this share of the outline inside the frame (the rest
+  // counts as the cap): an object coming back may still be cut by the frame's edge.
+  double min_inside_share = 0.75;
+  int near_tries = 2;
+  int frame_tries = 3;
+};
+
+class Reacquirer {
+ public:
+  // The best placements of `outline` over the segments: up to near_tries within one outline
+  // size of its current position, then up to frame_tries anywhere (near ones included), best
+  // first,
+  // no two placements closer than half the outline's size. Empty when there are no segments.
+  std::vector<Placement> rank(const Polygon& outline, const std::vector<Segment>& segments,
+                              cv::Size frame_size, const PlacementOptions& options);
+
+ private:
+  cv::Mat edges_;     // segments drawn as 0 on 255
+  cv::Mat distance_;  // distance transform of edges_, CV_32F
+};
+
+}  // namespace scbt

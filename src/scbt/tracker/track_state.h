@@ -1,0 +1,103 @@
+// Whether the object is being tracked, may be lost, or is lost: a per-frame state from the
+// confidence of the tracked boundary (confidence.h), with the last confident boundary kept to
+// stand in for the object while it is lost and to recognise it again (reacquire.h).
+#pragma once
+
+#include <array>
+#include <string>
+
+#include "scbt/geometry/polygon.h"
+#include "scbt/geometry/shape_descriptor.h"
+#include "scbt/tracker/confidence.h"
+
+namespace scbt {
+
+enum class TrackState {
+  kTracking,   // confidence >= LossOptions::tracking_confidence
+  kUncertain,  // a boundary was found but is not trusted, or the object was missed (not yet lost)
+  kLost,       // missed on LossOptions::misses_to_lost frames in a row; searching for it
+};
+
+std::string to_string(TrackState state);
+
+struct LossOptions {
+  // Off: the tracker never declares the object lost and never searches the frame (the paper's
+  // behaviour); states are still reported (`uncertain` instead of `lost`).
+  bool enabled = true;
+  // A frame whose boundary has at least this confidence is `tracking`; its boundary becomes the
+  // last confident one (the shape searched for when lost). The confidence falls with the change
+  // of shape since the last confident frame, so the reference follows gradual change only.
+  double tracking_confidence = 0.5;
+  // A held frame, or a boundary of confidence below this, is a miss.
+  double miss_confidence = 0.2;
+  // This many misses in a row: `lost`. The output goes back to the last confident boundary.
+  int misses_to_lost = 3;
+  // While lost, a closed cycle is taken as the object found again when its shape_distance to the
+  // last confident boundary is at most this (an ellipse of aspect 1.1 against a circle: 0.024)
+  // and its confidence at least tracking_confidence.
+  double match_shape_distance = 0.05;
+  // ... and when the grey level just inside it is within this of the last confident boundary's
+  // (a textureless object keeps its level; a look-alike outline in the clutter rarely does).
+  double max_level_change = 30.0;
+  // A match is taken once it has been found on this many frames in a row at the same place
+  // (within a quarter of the object's size): one frame's look-alike is not enough.
+  int confirm_frames = 2;
+  // Scales of the last confident boundary searched for (moderate: the object keeps its size
+  // within this range while out of sight).
+  double min_scale = 0.75;
+  double max_scale = 1.33;
+  // Places tried per frame while lost: near the last position, then over the whole frame.
+  int near_tries = 2;
+  int frame_tries = 3;
+
+  // Throws std::invalid_argument naming the first bad value.
+  void check() const;
+};
+
+// Turns per-frame confidences into states and remembers the last confident boundary.
+class LossMonitor {
+ public:
+  explicit LossMonitor(const LossOptions& options = {}) : options_(options) {}
+
+  // A new track from a boundary the user trusts.
+  // `inside_level`: BoundaryEvidence::inside_level of the boundary (-1 unknown).
+  void reset(const Polygon& boundary, double inside_level);
+  // The state of a frame whose boundary `boundary` was found with `confidence`, or held
+  // (`held`, confidence 0). Records the boundary as confident when it is.
+  TrackState update(const Polygon& boundary, double confidence, bool held,
+                    const BoundaryEvidence& evidence);
+  // The object found again while lost: tracking resumes from `boundary`.
+  void resume(const Polygon& boundary, double inside_level) { reset(boundary, inside_level); }
+  // Whether a cycle found while lost is the object: its shape and inside level match the last
+  // confident boundary's and its confidence is that of a tracked frame.
+  bool matches(const Polygon& cycle, const BoundaryEvidence& evidence, double confidence) const;
+
+  TrackState state() const { return state_; }
+  const Polygon& last_confident() const { return last_confident_; }
+  const ShapeDescriptor& reference() const { return reference_; }
+  const LossOptions& options() const { return options_; }
+
+ private:
+  void set_confident(const Polygon& boundary, double inside_level);
+
+  LossOptions options_;
+  TrackState state_ = TrackState::kTracking;
+  int misses_ = 0;
+  Polygon last_confident_;
+  ShapeDescriptor reference_;
+  double reference_level_ = -1.0;
+  // The last kHistory confident frames (a ring). The frames just before a loss are suspect (an
+  // occluder may already cover part of the object while the confidence is still high), so when
+  // the object is declared lost, the oldest of them becomes the last confident boundary.
+  static constexpr int kHistory = 4;
+  struct Confident {
+    Polygon boundary;
+    ShapeDescriptor descriptor;
+    double level = -1.0;
+  };
+  std::array<Confident, kHistory> history_;
+  int history_size_ = 0;
+  int history_next_ = 0;
+};
+
+}  // namespace scbt

@@ -1,0 +1,122 @@
+// The tracker's loss handling: the confidence of each tracked frame, and the search for the object
+// while it is lost (TrackState::kLost).
+#include <algorithm>
+#include <chrono>
+
+#include "scbt/lines/line_detector.h"
+#include "scbt/tracker/tracker.h"
+
+namespace scbt {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double elapsed_ms(Clock::time_point since) {
+  return std::chrono::duration<double, std::milli>(Clock::now() - since).count();
+}
+
+// A Sobel response of `threshold` is a grey step of about threshold / 4 (the 3x3 Sobel kernel
+// weighs a step 1 + 2 + 1): the smallest step the detector sees as an edge.
+double min_edge_step(const LineDetectorOptions& detector) {
+  return detector.gradient_threshold / 4.0;
+}
+
+// A re-found object may be a little larger or smaller than when it was lost: the area gate of
+// the search around a placement is relaxed to this (the shape must then match).
+constexpr double kSearchSimilarity = 0.8;
+
+}  // namespace
+
+BoundaryEvidence Tracker::evidence_of(const Attempt& a, const Polygon& chosen,
+                                      const Polygon& previous) const {
+  const double gap_length = a.choice->cost * a.cycles->area(a.choice->index);
+  return measure_evidence(chosen, gap_length, previous, monitor_.reference(), gray_, a.roi.tl(),
+                          min_edge_step(options_.detector));
+}
+
+TrackResult Tracker::track_lost(const cv::Mat& frame) {
+  TrackResult result;
+  result.state = TrackState::kLost;
+  result.held = true;
+  const Clock::time_point line_start = Clock::now();
+  to_gray(frame, &search_gray_);
+  const std::vector<Segment> segments =
+      detector_->detect_in(search_gray_, cv::Point(0, 0), frame_size_);
+  result.line_ms = elapsed_ms(line_start);
+
+  const Clock::time_point rank_start = Clock::now();
+  const LossOptions& loss = options_.loss;
+  PlacementOptions placement_options;
+  placement_options.min_scale = loss.min_scale;
+  placement_options.max_scale = loss.max_scale;
+  placement_options.cap = 0.5 * options_.filter_distance;
+  placement_options.near_tries = loss.near_tries;
+  placement_options.frame_tries = loss.frame_tries;
+  std::vector<Placement> placements =
+      reacquirer_.rank(monitor_.last_confident(), segments, frame_size_, placement_options);
+  // Last frame's match is searched for first, where it was.
+  if (!pending_.empty()) placements.insert(placements.begin(), Placement{pending_, 0.0, true});
+  result.stages.recovery_ms = elapsed_ms(rank_start);
+  result.grouping_ms = result.stages.recovery_ms;
+
+  const double similarity = std::min(options_.min_area_similarity, kSearchSimilarity);
+  Attempt* a = &attempts_[1];
+  Polygon match;
+  for (const Placement& placement : placements) {
+    attempt(frame, placement.outline, a, similarity);
+    result.line_ms += a->line_ms;
+    result.grouping_ms += a->grouping_ms;
+    result.num_candidates += a->cycles->num_candidates();
+    if (!a->choice) continue;
+    Polygon cycle = a->cycles->polygon(a->graph, a->choice->index);
+    const BoundaryEvidence evidence = evidence_of(*a, cycle, placement.outline);
+    const double confidence = options_.confidence(evidence);
+    if (!monitor_.matches(cycle, evidence, confidence)) continue;
+    result.evidence = evidence;
+    result.confidence = confidence;
+    result.cost = a->choice->cost;
+    result.area_similarity =
+        area_similarity(area(monitor_.last_confident()), a->cycles->area(a->choice->index));
+    match = std::move(cycle);
+    break;
+  }
+  result.num_detected = static_cast<int>(segments.size());
+  if (keep_debug_) debug_.detected = segments;
+  if (match.empty()) {
+    pending_.clear();
+    pending_matches_ = 0;
+    result.confidence = 0.0;
+    result.boundary = boundary_;
+    return result;
+  }
+  const bool same_place = !pending_.empty() && cv::norm(centroid(match) - centroid(pending_)) <=
+                                                   0.25 * std::sqrt(area(match));
+  pending_matches_ = same_place ? pending_matches_ + 1 : 1;
+  pending_ = match;
+  if (pending_matches_ < loss.confirm_frames) {
+    // Not yet trusted: still lost, the last confident boundary stays the output.
+    result.boundary = boundary_;
+    return result;
+  }
+  result.state = TrackState::kTracking;
+  result.held = false;
+  result.reacquired = true;
+  monitor_.resume(match, result.evidence.inside_level);
+  boundary_ = std::move(match);
+  boundary_area_ = area(boundary_);
+  pending_.clear();
+  pending_matches_ = 0;
+  // The motion model and the motion reference start again from this frame.
+  motion_.reset();
+  motion_.update(boundary_);
+  reference_roi_ = cv::Rect(cv::Point(0, 0), frame_size_);
+  search_gray_.copyTo(reference_gray_);
+  result.boundary = boundary_;
+  result.num_kept = static_cast<int>(a->kept.size());
+  result.num_vertices = a->graph.num_vertices();
+  result.num_edges = a->graph.num_edges();
+  if (keep_debug_) debug_.graph = a->graph;
+  return result;
+}
+
+}  // namespace scbt
