@@ -1,0 +1,52 @@
+// What loss handling adds to a normally tracked frame: the evidence of the chosen boundary
+// (confidence.h: gap share, edge samples, shape descriptor, jump), the confidence, and the state
+// update that records a confident boundary (track_state.h). Run pinned to one core:
+//   taskset -c 0 build/bench/scbt_loss_bench
+#include <benchmark/benchmark.h>
+
+#include "scbt/synthetic/scene.h"
+#include "scbt/tracker/confidence.h"
+#include "scbt/tracker/track_state.h"
+#include "scbt/tracker/tracker.h"
+
+namespace scbt {
+namespace {
+
+// A rim (72 vertices) or box outline on a rendered 640x480 frame, as a tracked boundary.
+struct Input {
+  Polygon boundary;
+  Polygon previous;
+  cv::Mat gray;
+};
+
+Input make_input(SceneShape shape) {
+  SceneOptions options;
+  options.shape = shape;
+  options.object_size = 120.0;
+  const SceneFrame frame = render_frame(options, Pose{}, 0);
+  Input input;
+  input.boundary = frame.truth;
+  input.previous = frame.truth;
+  for (Point& p : input.previous) p += Point(1.5, -0.5);
+  to_gray(frame.image, &input.gray);
+  return input;
+}
+
+void BM_ConfidenceAndState(benchmark::State& state) {
+  const Input input = make_input(state.range(0) == 0 ? SceneShape::kRim : SceneShape::kBox);
+  const ConfidenceModel model;
+  LossMonitor monitor;
+  monitor.reset(input.previous, -1.0);
+  for (auto _ : state) {
+    const BoundaryEvidence evidence = measure_evidence(
+        input.boundary, 10.0, input.previous, monitor.reference(), input.gray, {0, 0}, 9.0);
+    const double confidence = model(evidence);
+    benchmark::DoNotOptimize(monitor.update(input.boundary, confidence, false, evidence));
+  }
+}
+BENCHMARK(BM_ConfidenceAndState)->Arg(0)->Arg(1)->Unit(benchmark::kMicrosecond);
+
+}  // namespace
+}  // namespace scbt
+
+BENCHMARK_MAIN();
