@@ -15,11 +15,12 @@
 //      line within 22.5 degrees, p = 1/8, on the unsmoothed image) has NFA <= 1, with the number
 //      of tests (W H)^2 of the image analysed (the window, when detecting in one: the candidate
 //      lines tested are those in it; OpenCV's EdgeDrawing run on the window does the same).
-// Flat member buffers are reused from call to call; no allocation in steady state beyond the
-// output vector's growth. The input may be a window of a larger image (the automatic minimum
-// line length then uses the larger image's size) and may be restricted to a band (a mask, or
-// spans per row) where edges may start and run, which is how the tracker looks only near its
-// previous boundary; with a band, steps 1 and 2 run only in the blocks of columns near it.
+// Steps 1-2 are in edlines_gradient.cc, 3 in edlines_edge_drawing.cc, 4 in edlines_line_fit.cc,
+// 5 in edlines_validation.cc. Flat member buffers are reused from call to call; no allocation in
+// steady state beyond the output vector's growth. The input may be a window of a larger image (the
+// automatic minimum line length then uses the larger image's size) and may be restricted to a band
+// (a mask, or spans per row) where edges may start and run, which is how the tracker looks only
+// near its previous boundary; with a band, steps 1 and 2 run only in the blocks of columns near it.
 #pragma once
 
 #include <cstdint>
