@@ -27,6 +27,7 @@
 #include "scbt/lines/line_detector.h"
 #include "scbt/render/annotate.h"
 #include "scbt/tracker/tracker.h"
+#include "scbt/version.h"
 
 namespace py = pybind11;
 
@@ -438,7 +439,7 @@ PYBIND11_MODULE(scbt, m) {
       "(BGRA), as cv2 returns them; they are read in place when their rows are compact. "
       "Polygons are (N, 2) float arrays of x, y pixel coordinates; segments are (M, 4) float "
       "arrays of x1, y1, x2, y2. Bad options raise ValueError, wrong types TypeError.";
-  m.attr("__version__") = "0.1.0";
+  m.attr("__version__") = SCBT_VERSION;
 
   py::class_<FrameStats>(m, "FrameStats",
                          "Statistics and timings of one tracked frame (see Tracker.track).")

@@ -4,7 +4,7 @@
 set -euo pipefail
 
 packages=(
-  cmake g++ make pkg-config
+  cmake g++ make pkg-config dpkg-dev file
   libopencv-dev libopencv-contrib-dev
   libboost-graph-dev libcgal-dev libeigen3-dev
   libcli11-dev

@@ -6,6 +6,7 @@
 #include <iostream>
 
 #include "scbt/cli/commands.h"
+#include "scbt/version.h"
 
 int main(int argc, char** argv) {
   // A closed pipe on standard output is EPIPE, not death: `scbt track -o - | head` ends cleanly
@@ -13,7 +14,7 @@ int main(int argc, char** argv) {
   std::signal(SIGPIPE, SIG_IGN);
   CLI::App app{"scbt: real-time salient closed boundary tracking via line segment grouping"};
   app.require_subcommand(1);
-  app.set_version_flag("--version", "scbt 0.1.0");
+  app.set_version_flag("--version", "scbt " SCBT_VERSION);
   int exit_code = 0;
   scbt::cli::add_track_command(app, &exit_code);
   scbt::cli::add_demo_command(app, &exit_code);

@@ -1,0 +1,44 @@
+#!/usr/bin/env python3
+"""Tracks a boundary through a folder of frames with the installed scbt module and prints the
+boundary of every frame as one line `n x1 y1 ... xn yn` (scbt's polygon format).
+
+    python3 track_folder.py FRAMES_DIR INIT_POLYGON_FILE
+
+Frames are the folder's .png images in name order; the first line of INIT_POLYGON_FILE is the
+boundary in the first frame.
+"""
+import pathlib
+import sys
+
+import cv2
+import numpy as np
+import scbt
+
+
+def read_first_polygon(path):
+    values = pathlib.Path(path).read_text().split("\n", 1)[0].split()
+    n = int(values[0])
+    return np.array(values[1 : 1 + 2 * n], dtype=float).reshape(n, 2)
+
+
+def format_polygon(polygon):
+    return " ".join([str(len(polygon))] + [f"{v:.2f}" for v in np.asarray(polygon).ravel()])
+
+
+def main(argv):
+    if len(argv) != 3:
+        sys.exit(f"usage: {argv[0]} FRAMES_DIR INIT_POLYGON_FILE  (scbt {scbt.__version__})")
+    paths = sorted(pathlib.Path(argv[1]).glob("*.png"))
+    if not paths:
+        sys.exit(f"no .png frames in {argv[1]}")
+    tracker = scbt.Tracker()  # default options: the paper's settings
+    tracker.init(cv2.imread(str(paths[0])), read_first_polygon(argv[2]))
+    print(format_polygon(tracker.boundary))
+    for number, path in enumerate(paths[1:], start=2):
+        boundary, stats = tracker.track(cv2.imread(str(path)))
+        print(format_polygon(boundary))
+        print(f"frame {number}: held {stats.held}, {stats.total_ms:.2f} ms", file=sys.stderr)
+
+
+if __name__ == "__main__":
+    main(sys.argv)
