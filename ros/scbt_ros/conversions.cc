@@ -34,8 +34,8 @@ Polygon from_polygon_msg(const geometry_msgs::Polygon& polygon) {
   return out;
 }
 
-Polygon from_roi_msg(const sensor_msgs::RegionOfInterest& roi) {
-  return box_polygon(roi.x_offset, roi.y_offset, roi.width, roi.height);
+cv::Rect from_roi_msg(const sensor_msgs::RegionOfInterest& roi) {
+  return pixel_box(roi.x_offset, roi.y_offset, roi.width, roi.height);
 }
 
 bool is_tracker_encoding(const std::string& encoding) {

@@ -21,8 +21,8 @@ geometry_msgs::PolygonStamped to_polygon_msg(const Polygon& polygon,
 // The polygon's (x, y) vertices; z is ignored.
 Polygon from_polygon_msg(const geometry_msgs::Polygon& polygon);
 
-// The box's corners (box_polygon). Throws std::invalid_argument for an empty box.
-Polygon from_roi_msg(const sensor_msgs::RegionOfInterest& roi);
+// The region as a box. Throws std::invalid_argument for an empty one.
+cv::Rect from_roi_msg(const sensor_msgs::RegionOfInterest& roi);
 
 // True for the encodings the tracker takes: 8-bit mono8, bgr8, rgb8, bgra8 and rgba8.
 bool is_tracker_encoding(const std::string& encoding);

@@ -141,11 +141,14 @@ const std::vector<std::string>& known_parameters() {
 
 }  // namespace
 
-Polygon box_polygon(double x, double y, double width, double height) {
-  if (!(width > 0.0) || !(height > 0.0)) {
+cv::Rect pixel_box(double x, double y, double width, double height) {
+  const cv::Rect box(cvRound(x), cvRound(y), cvRound(width), cvRound(height));
+  if (box.width <= 0 || box.height <= 0) {
     throw std::invalid_argument("a box needs a positive width and height");
   }
-  return {{x, y}, {x + width, y}, {x + width, y + height}, {x, y + height}};
+  if (box.x < 0 || box.y < 0)
+    throw std::invalid_argument("a box must not start left of or above the image");
+  return box;
 }
 
 void NodeOptions::check() const {
@@ -200,7 +203,11 @@ NodeOptions read_node_options(const ros::NodeHandle& node) {
       throw std::invalid_argument("parameter " + node.resolveName("init_box") +
                                   " must be [x, y, width, height]");
     }
-    options.init_polygon = box_polygon((*box)[0], (*box)[1], (*box)[2], (*box)[3]);
+    try {
+      options.init_box = pixel_box((*box)[0], (*box)[1], (*box)[2], (*box)[3]);
+    } catch (const std::invalid_argument& e) {
+      throw std::invalid_argument("parameter " + node.resolveName("init_box") + ": " + e.what());
+    }
   }
   options.check();
   return options;

@@ -3,6 +3,7 @@
 // defaults, plus how the node is wired and initialised.
 #pragma once
 
+#include <opencv2/core/types.hpp>
 #include <optional>
 #include <string>
 #include <vector>
@@ -26,9 +27,11 @@ struct NodeOptions {
   DepthOptions depth;
   // Messages the synchroniser keeps per topic while matching stamps (ApproximateTime).
   int sync_queue_size = 10;
-  // The initial boundary from `~init_polygon` [x1, y1, x2, y2, ...] or `~init_box` [x, y, w, h]
-  // (pixels); applied to the first frame that arrives.
+  // The initial boundary from `~init_polygon` [x1, y1, x2, y2, ...] (pixels), or the most
+  // salient closed boundary inside `~init_box` [x, y, w, h] (Tracker::init_from_box); applied to
+  // the first frame that arrives. At most one of them is set.
   std::optional<Polygon> init_polygon;
+  std::optional<cv::Rect> init_box;
 
   // Throws std::invalid_argument naming the first bad value.
   void check() const;
@@ -42,8 +45,8 @@ NodeOptions read_node_options(const ros::NodeHandle& private_node);
 // Private parameters that are set but that the node does not know (likely typos).
 std::vector<std::string> unknown_parameters(const ros::NodeHandle& private_node);
 
-// The four corners of the axis-aligned box (x, y, width, height), clockwise as drawn.
-// Throws std::invalid_argument for a non-positive width or height.
-Polygon box_polygon(double x, double y, double width, double height);
+// The box (x, y, width, height) in whole pixels (rounded). Throws std::invalid_argument for a
+// negative corner or a non-positive width or height.
+cv::Rect pixel_box(double x, double y, double width, double height);
 
 }  // namespace scbt::ros_node

@@ -28,14 +28,25 @@ std::string state_json(const FrameReport& report) {
   nlohmann::json timings;
   timings["latency"] = report.latency_ms;
   if (const TrackResult* r = report.result) {
+    out["state"] = to_string(r->state);
+    out["confidence"] = r->confidence;
     out["held"] = r->held;
     out["recovered"] = r->recovered;
+    out["reacquired"] = r->reacquired;
     out["cost"] = r->cost;
     out["area_similarity"] = r->area_similarity;
     timings["line"] = r->line_ms;
     timings["grouping"] = r->grouping_ms;
     timings["total"] = r->total_ms();
+    timings["filter"] = r->stages.filter_ms;
+    timings["graph"] = r->stages.graph_ms;
+    timings["search"] = r->stages.search_ms;
+    timings["choice"] = r->stages.choice_ms;
+    timings["recovery"] = r->stages.recovery_ms;
   } else if (report.event == FrameEvent::kInitialised) {
+    // A new track from a boundary the user gave: tracking, its confidence not measured.
+    out["state"] = to_string(TrackState::kTracking);
+    out["confidence"] = nullptr;
     out["held"] = false;
   }
   if (const Boundary3d* b = report.boundary_3d) {

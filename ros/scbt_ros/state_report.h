@@ -31,8 +31,8 @@ struct FrameReport {
   double depth_ms = 0.0;                    // the lift to 3-D
 };
 
-// {"event": ..., "frame": ..., "held": ..., "timings_ms": {...}, "dropped_frames": ...,
-// "missed_frames": ...}.
+// {"event": ..., "frame": ..., "state": ..., "confidence": ..., "held": ..., "timings_ms": {...},
+// "dropped_frames": ..., "missed_frames": ...} (docs/ros.md lists the fields).
 std::string state_json(const FrameReport& report);
 
 }  // namespace scbt::ros_node

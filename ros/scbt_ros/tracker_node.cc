@@ -37,7 +37,8 @@ TrackerNode::TrackerNode(const ros::NodeHandle& node, const ros::NodeHandle& pri
   }
   init_subscriber_ = private_node_.subscribe("init", 1, &TrackerNode::on_init, this);
   init_box_subscriber_ = private_node_.subscribe("init_box", 1, &TrackerNode::on_init_box, this);
-  if (options_.init_polygon) request_init(*options_.init_polygon, "parameter");
+  if (options_.init_polygon) request_init({options_.init_polygon, std::nullopt, "~init_polygon"});
+  if (options_.init_box) request_init({std::nullopt, options_.init_box, "~init_box"});
   worker_ = std::thread([this] { run_worker(); });
 }
 
@@ -96,21 +97,43 @@ void TrackerNode::on_image_and_depth(const sensor_msgs::ImageConstPtr& image,
 }
 
 void TrackerNode::on_init(const geometry_msgs::PolygonStampedConstPtr& polygon) {
-  request_init(from_polygon_msg(polygon->polygon), init_subscriber_.getTopic());
+  request_init({from_polygon_msg(polygon->polygon), std::nullopt, init_subscriber_.getTopic()});
 }
 
 void TrackerNode::on_init_box(const sensor_msgs::RegionOfInterestConstPtr& box) {
   try {
-    request_init(from_roi_msg(*box), init_box_subscriber_.getTopic());
+    request_init({std::nullopt, from_roi_msg(*box), init_box_subscriber_.getTopic()});
   } catch (const std::exception& e) {
     ROS_ERROR_STREAM("scbt: box on " << init_box_subscriber_.getTopic()
                                      << " ignored: " << e.what());
   }
 }
 
-void TrackerNode::request_init(Polygon polygon, const std::string& source) {
+void TrackerNode::request_init(PendingInit init) {
   std::lock_guard<std::mutex> lock(init_mutex_);
-  pending_init_ = PendingInit{std::move(polygon), source};
+  pending_init_ = std::move(init);
+}
+
+bool TrackerNode::apply_init(const PendingInit& init, const cv::Mat& image) {
+  try {
+    if (init.box) {
+      const Polygon found = tracker_.init_from_box(image, *init.box);
+      ROS_INFO_STREAM("scbt: initialised from the box on "
+                      << init.source << " (" << init.box->width << "x" << init.box->height << " at "
+                      << init.box->x << "," << init.box->y << "): a boundary of " << found.size()
+                      << " vertices");
+    } else {
+      tracker_.init(image, *init.polygon);
+      ROS_INFO_STREAM("scbt: initialised from " << init.source << " with " << init.polygon->size()
+                                                << " vertices");
+    }
+    return true;
+  } catch (const std::exception& e) {
+    // The tracker keeps the boundary it had, if any.
+    ROS_ERROR_STREAM("scbt: initial " << (init.box ? "box" : "boundary") << " from " << init.source
+                                      << " rejected: " << e.what());
+    return false;
+  }
 }
 
 void TrackerNode::run_worker() {
@@ -134,22 +157,10 @@ void TrackerNode::process(const Frame& frame) {
     std::lock_guard<std::mutex> lock(init_mutex_);
     std::swap(init, pending_init_);
   }
-  if (init) {
-    bool applied = false;
-    try {
-      tracker_.init(image, init->polygon);
-      applied = true;
-    } catch (const std::exception& e) {
-      // The tracker keeps the boundary it had, if any.
-      ROS_ERROR_STREAM("scbt: initial boundary from " << init->source << " rejected: " << e.what());
-    }
-    if (applied) {
-      ROS_INFO_STREAM("scbt: initialised from " << init->source << " with " << init->polygon.size()
-                                                << " vertices");
-      boundary_publisher_.publish(to_polygon_msg(tracker_.boundary(), frame.image->header));
-      publish_state(frame, FrameReport{FrameEvent::kInitialised});
-      return;
-    }
+  if (init && apply_init(*init, image)) {
+    boundary_publisher_.publish(to_polygon_msg(tracker_.boundary(), frame.image->header));
+    publish_state(frame, FrameReport{FrameEvent::kInitialised});
+    return;
   }
   if (!tracker_.initialized()) {
     ROS_INFO_THROTTLE(10.0, "scbt: waiting for an initial boundary on ~init or ~init_box");

@@ -47,8 +47,10 @@ class TrackerNode {
     sensor_msgs::CameraInfoConstPtr camera_info;
     ros::WallTime received;
   };
+  // A polygon to start from, or a box to find the boundary in (Tracker::init_from_box).
   struct PendingInit {
-    Polygon polygon;
+    std::optional<Polygon> polygon;
+    std::optional<cv::Rect> box;
     std::string source;  // for the log: "~init", "~init_box" or a parameter
   };
 
@@ -58,7 +60,9 @@ class TrackerNode {
                           const sensor_msgs::CameraInfoConstPtr& camera_info);
   void on_init(const geometry_msgs::PolygonStampedConstPtr& polygon);
   void on_init_box(const sensor_msgs::RegionOfInterestConstPtr& box);
-  void request_init(Polygon polygon, const std::string& source);
+  void request_init(PendingInit init);
+  // Applies `init` to `image`; false (and an error in the log) when the tracker rejects it.
+  bool apply_init(const PendingInit& init, const cv::Mat& image);
   // Counts the images missing between this one's header.seq and the previous one's.
   void note_sequence(std::uint32_t seq);
 

@@ -35,14 +35,13 @@ TEST(Conversions, PolygonRoundTripKeepsVerticesAndHeader) {
   EXPECT_EQ(from_polygon_msg(msg.polygon), p);
 }
 
-TEST(Conversions, BoxBecomesItsFourCorners) {
+TEST(Conversions, RegionBecomesABox) {
   sensor_msgs::RegionOfInterest roi;
   roi.x_offset = 10;
   roi.y_offset = 20;
   roi.width = 30;
   roi.height = 40;
-  const Polygon expected = {{10, 20}, {40, 20}, {40, 60}, {10, 60}};
-  EXPECT_EQ(from_roi_msg(roi), expected);
+  EXPECT_EQ(from_roi_msg(roi), cv::Rect(10, 20, 30, 40));
   roi.width = 0;
   EXPECT_THROW(from_roi_msg(roi), std::invalid_argument);
 }
@@ -107,9 +106,12 @@ TEST(Conversions, CameraInfoGivesIntrinsicsAndDistortion) {
   EXPECT_THROW(from_camera_info_msg(info), std::invalid_argument);
 }
 
-TEST(StateReport, TrackedFrameCarriesHeldTimingsAndDrops) {
+TEST(StateReport, TrackedFrameCarriesStateConfidenceHeldTimingsAndDrops) {
   TrackResult result;
   result.held = true;
+  result.state = TrackState::kLost;
+  result.confidence = 0.125;
+  result.stages.search_ms = 0.375;
   result.line_ms = 0.25;
   result.grouping_ms = 0.5;
   FrameReport report{FrameEvent::kTracked};
@@ -124,7 +126,14 @@ TEST(StateReport, TrackedFrameCarriesHeldTimingsAndDrops) {
   EXPECT_EQ(json["dropped_frames"], 3);
   EXPECT_EQ(json["dropped_since_last"], 1);
   EXPECT_DOUBLE_EQ(json["timings_ms"]["total"].get<double>(), 0.75);
+  EXPECT_DOUBLE_EQ(json["timings_ms"]["search"].get<double>(), 0.375);
+  EXPECT_EQ(json["state"], "lost");
+  EXPECT_DOUBLE_EQ(json["confidence"].get<double>(), 0.125);
   EXPECT_FALSE(nlohmann::json::parse(state_json(FrameReport{})).contains("held"));
+  EXPECT_FALSE(nlohmann::json::parse(state_json(FrameReport{})).contains("state"));
+  const auto initialised = nlohmann::json::parse(state_json(FrameReport{FrameEvent::kInitialised}));
+  EXPECT_EQ(initialised["state"], "tracking");
+  EXPECT_TRUE(initialised["confidence"].is_null());
 }
 
 }  // namespace

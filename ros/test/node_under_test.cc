@@ -1,5 +1,6 @@
 #include "node_under_test.h"
 
+#include <sensor_msgs/RegionOfInterest.h>
 #include <std_msgs/String.h>
 
 #include <boost/make_shared.hpp>
@@ -37,6 +38,13 @@ sensor_msgs::ImagePtr to_image_msg(const cv::Mat& image, const std::string& enco
   return msg;
 }
 
+cv::Rect loose_box(const Polygon& outline) {
+  const cv::Rect2d tight = bounding_box(outline);
+  const double margin = 0.15 * std::max(tight.width, tight.height);
+  return cv::Rect(cvRound(tight.x - margin), cvRound(tight.y - margin),
+                  cvRound(tight.width + 2 * margin), cvRound(tight.height + 2 * margin));
+}
+
 std::vector<double> flatten(const Polygon& polygon) {
   std::vector<double> out;
   for (const Point& p : polygon) {
@@ -53,6 +61,7 @@ NodeUnderTest::NodeUnderTest(const std::string& name, const std::vector<std::str
   ros::NodeHandle nh;
   image_ = nh.advertise<sensor_msgs::Image>("/" + name + "/image", 200);
   init_ = nh.advertise<geometry_msgs::PolygonStamped>("/" + name + "/init", 1);
+  init_box_ = nh.advertise<sensor_msgs::RegionOfInterest>("/" + name + "/init_box", 1);
   boundary_ = nh.subscribe<geometry_msgs::PolygonStamped>(
       "/" + name + "/boundary", 200,
       [this](const geometry_msgs::PolygonStampedConstPtr& m) { boundaries.push(*m); });
@@ -84,6 +93,15 @@ void NodeUnderTest::publish_init(const Polygon& polygon) {
   std_msgs::Header header;
   header.stamp = ros::Time::now();
   init_.publish(ros_node::to_polygon_msg(polygon, header));
+}
+
+void NodeUnderTest::publish_init_box(const cv::Rect& box) {
+  sensor_msgs::RegionOfInterest roi;
+  roi.x_offset = box.x;
+  roi.y_offset = box.y;
+  roi.width = box.width;
+  roi.height = box.height;
+  init_box_.publish(roi);
 }
 
 }  // namespace scbt::ros_test

@@ -31,6 +31,9 @@ std::vector<SceneFrame> render_test_clip(SceneShape shape, std::uint32_t seed, i
 sensor_msgs::ImagePtr to_image_msg(const cv::Mat& image, const std::string& encoding,
                                    const ros::Time& stamp, std::uint32_t seq);
 
+// A box 15 % of the object's size larger than its outline on every side, as a user would draw it.
+cv::Rect loose_box(const Polygon& outline);
+
 // [x1, y1, x2, y2, ...] as the ~init_polygon parameter takes it.
 std::vector<double> flatten(const Polygon& polygon);
 
@@ -50,6 +53,7 @@ class NodeUnderTest {
   void publish(const cv::Mat& image, const ros::Time& stamp,
                const std::string& encoding = sensor_msgs::image_encodings::BGR8);
   void publish_init(const Polygon& polygon);
+  void publish_init_box(const cv::Rect& box);
 
   const std::string& name() const { return name_; }
 
@@ -61,6 +65,7 @@ class NodeUnderTest {
   std::string name_;
   ros::Publisher image_;
   ros::Publisher init_;
+  ros::Publisher init_box_;
   ros::Subscriber boundary_;
   ros::Subscriber state_;
   std::uint32_t next_seq_ = 0;
