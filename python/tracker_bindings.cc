@@ -1,0 +1,380 @@
+// Python bindings of the tracker: Tracker (init, init_from_box, track), its per-frame FrameStats
+// with the state and confidence, and BoundaryEvidence.
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <mutex>
+#include <opencv2/core/mat.hpp>
+#include <set>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "bindings.h"
+#include "convert.h"
+#include "scbt/render/annotate.h"
+#include "scbt/tracker/tracker.h"
+
+namespace py = pybind11;
+
+namespace scbt {
+namespace {
+
+// (x, y, w, h) of numbers; ValueError for another length or a non-finite value.
+cv::Rect box_from_object(const py::object& object) {
+  std::vector<double> values;
+  try {
+    values = object.cast<std::vector<double>>();
+  } catch (const py::cast_error&) {
+    throw py::type_error("box must be a sequence of 4 numbers (x, y, w, h)");
+  }
+  if (values.size() != 4) {
+    throw py::value_error("box must have 4 values (x, y, w, h), got " +
+                          std::to_string(values.size()));
+  }
+  check_finite_row(values.data(), 4, 0, "box");
+  return cv::Rect(
+      static_cast<int>(std::lround(values[0])), static_cast<int>(std::lround(values[1])),
+      static_cast<int>(std::lround(values[2])), static_cast<int>(std::lround(values[3])));
+}
+
+TrackerOptions tracker_options_from_kwargs(const py::kwargs& kwargs, bool* keep_debug) {
+  TrackerOptions options;
+  std::set<std::string> used;
+  with_option_names(kwargs, [&] {
+    apply_detector_kwargs(kwargs, &options.detector, &used);
+    for (auto item : kwargs) {
+      const std::string key = py::str(item.first).cast<std::string>();
+      const py::handle value = item.second;
+      bool known = true;
+      if (key == "filter_distance") {
+        options.filter_distance = value.cast<double>();
+      } else if (key == "min_area_similarity") {
+        options.min_area_similarity = value.cast<double>();
+      } else if (key == "cost_tolerance") {
+        options.cost_tolerance = value.cast<double>();
+      } else if (key == "max_segments") {
+        options.max_segments = value.cast<int>();
+      } else if (key == "seed_stride") {
+        options.bdsp.seed_stride = value.cast<int>();
+      } else if (key == "loss_handling") {
+        options.loss.enabled = value.cast<bool>();
+      } else if (key == "keep_debug") {
+        *keep_debug = value.cast<bool>();
+      } else {
+        known = false;
+      }
+      if (known) used.insert(key);
+    }
+  });
+  reject_unknown(kwargs, used, "Tracker");
+  return options;
+}
+
+py::dict options_to_dict(const TrackerOptions& o, bool keep_debug) {
+  py::dict d;
+  d["detector"] = to_string(o.detector.kind);
+  d["gradient_threshold"] = o.detector.gradient_threshold;
+  d["anchor_threshold"] = o.detector.anchor_threshold;
+  d["scan_interval"] = o.detector.scan_interval;
+  d["sigma"] = o.detector.sigma;
+  d["min_line_length"] = o.detector.min_line_length;
+  d["line_fit_error"] = o.detector.line_fit_error;
+  d["crop_to_boundary"] = o.detector.crop_to_boundary;
+  d["roi_padding"] = o.detector.roi_padding;
+  d["max_segments"] = o.max_segments;
+  d["filter_distance"] = o.filter_distance;
+  d["min_area_similarity"] = o.min_area_similarity;
+  d["cost_tolerance"] = o.cost_tolerance;
+  d["seed_stride"] = o.bdsp.seed_stride;
+  d["loss_handling"] = o.loss.enabled;
+  d["keep_debug"] = keep_debug;
+  return d;
+}
+
+// Per-frame statistics of Tracker.track (TrackResult without the boundary).
+struct FrameStats {
+  bool held = false;
+  double cost = 0.0;
+  double area_similarity = 0.0;
+  int num_detected = 0;
+  int num_kept = 0;
+  int num_dropped = 0;
+  int num_vertices = 0;
+  int num_edges = 0;
+  int num_candidates = 0;
+  bool recovered = false;
+  std::string state;  // to_string(TrackState)
+  double confidence = 0.0;
+  BoundaryEvidence evidence;
+  bool reacquired = false;
+  double line_ms = 0.0;
+  double grouping_ms = 0.0;
+  double total_ms() const { return line_ms + grouping_ms; }
+};
+
+FrameStats stats_of(const TrackResult& r) {
+  FrameStats s;
+  s.held = r.held;
+  s.cost = r.cost;
+  s.area_similarity = r.area_similarity;
+  s.num_detected = r.num_detected;
+  s.num_kept = r.num_kept;
+  s.num_dropped = r.num_dropped;
+  s.num_vertices = r.num_vertices;
+  s.num_edges = r.num_edges;
+  s.num_candidates = r.num_candidates;
+  s.recovered = r.recovered;
+  s.state = to_string(r.state);
+  s.confidence = r.confidence;
+  s.evidence = r.evidence;
+  s.reacquired = r.reacquired;
+  s.line_ms = r.line_ms;
+  s.grouping_ms = r.grouping_ms;
+  return s;
+}
+
+py::dict evidence_to_dict(const BoundaryEvidence& e) {
+  py::dict d;
+  d["gap_share"] = e.gap_share;
+  d["edge_support"] = e.edge_support;
+  d["shape_change"] = e.shape_change;
+  d["jump"] = e.jump;
+  d["inside_level"] = e.inside_level;
+  return d;
+}
+
+py::dict stats_to_dict(const FrameStats& s) {
+  py::dict d;
+  d["held"] = s.held;
+  d["cost"] = s.cost;
+  d["area_similarity"] = s.area_similarity;
+  d["num_detected"] = s.num_detected;
+  d["num_kept"] = s.num_kept;
+  d["num_dropped"] = s.num_dropped;
+  d["num_vertices"] = s.num_vertices;
+  d["num_edges"] = s.num_edges;
+  d["num_candidates"] = s.num_candidates;
+  d["recovered"] = s.recovered;
+  d["state"] = s.state;
+  d["confidence"] = s.confidence;
+  d["evidence"] = evidence_to_dict(s.evidence);
+  d["reacquired"] = s.reacquired;
+  d["line_ms"] = s.line_ms;
+  d["grouping_ms"] = s.grouping_ms;
+  d["total_ms"] = s.total_ms();
+  return d;
+}
+
+// The Python-facing tracker: the C++ Tracker plus a lock, since track() runs without the GIL
+// and two Python threads could otherwise call into the same tracker at once.
+class PyTracker {
+ public:
+  explicit PyTracker(const py::kwargs& kwargs) {
+    const TrackerOptions options = tracker_options_from_kwargs(kwargs, &keep_debug_);
+    tracker_ = Tracker(options);
+    tracker_.set_keep_debug(keep_debug_);
+  }
+
+  void init(const py::object& frame_object, const py::object& polygon_object) {
+    py::array keep;
+    const cv::Mat frame = frame_to_mat(frame_object, "frame", &keep);
+    const Polygon polygon = array_to_polygon(polygon_object, "polygon");
+    py::gil_scoped_release release;
+    std::lock_guard<std::mutex> lock(mutex_);
+    tracker_.init(frame, polygon);
+  }
+
+  py::array_t<double> init_from_box(const py::object& frame_object, const py::object& box_object) {
+    py::array keep;
+    const cv::Mat frame = frame_to_mat(frame_object, "frame", &keep);
+    const cv::Rect box = box_from_object(box_object);
+    Polygon boundary;
+    {
+      py::gil_scoped_release release;
+      std::lock_guard<std::mutex> lock(mutex_);
+      boundary = tracker_.init_from_box(frame, box);
+    }
+    return polygon_to_array(boundary);
+  }
+
+  py::tuple track(const py::object& frame_object) {
+    py::array keep;
+    const cv::Mat frame = frame_to_mat(frame_object, "frame", &keep);
+    TrackResult result;
+    {
+      py::gil_scoped_release release;
+      std::lock_guard<std::mutex> lock(mutex_);
+      if (!tracker_.initialized()) {
+        throw std::logic_error("Tracker.track() called before Tracker.init()");
+      }
+      result = tracker_.track(frame);
+    }
+    return py::make_tuple(polygon_to_array(result.boundary), stats_of(result));
+  }
+
+  py::object boundary() {
+    std::lock_guard<std::mutex> lock(mutex_);
+    if (!tracker_.initialized()) return py::none();
+    return polygon_to_array(tracker_.boundary());
+  }
+  bool initialized() {
+    std::lock_guard<std::mutex> lock(mutex_);
+    return tracker_.initialized();
+  }
+  py::dict options() { return options_to_dict(tracker_.options(), keep_debug_); }
+
+  py::array_t<double> detected_segments() {
+    std::lock_guard<std::mutex> lock(mutex_);
+    require_debug();
+    return segments_to_array(tracker_.debug().detected);
+  }
+  SegmentGraph debug_graph() {
+    std::lock_guard<std::mutex> lock(mutex_);
+    require_debug();
+    return tracker_.debug().graph;
+  }
+
+  py::array_t<uint8_t> annotate(const py::object& frame_object, const py::object& status) {
+    py::array keep;
+    const cv::Mat frame = frame_to_mat(frame_object, "frame", &keep);
+    std::lock_guard<std::mutex> lock(mutex_);
+    TrackResult result;
+    result.boundary = tracker_.boundary();
+    const cv::Mat out = annotate_frame(frame, tracker_.debug(), result,
+                                       status.is_none() ? "" : status.cast<std::string>());
+    py::array_t<uint8_t> array(
+        {static_cast<py::ssize_t>(out.rows), static_cast<py::ssize_t>(out.cols), py::ssize_t{3}});
+    for (int y = 0; y < out.rows; ++y) {
+      std::memcpy(array.mutable_data(y), out.ptr(y), static_cast<size_t>(out.cols) * 3);
+    }
+    return array;
+  }
+
+ private:
+  void require_debug() const {
+    if (!keep_debug_) {
+      throw std::logic_error(
+          "create the Tracker with keep_debug=True to read the last frame's "
+          "segments and graph");
+    }
+  }
+
+  Tracker tracker_;
+  bool keep_debug_ = false;
+  std::mutex mutex_;
+};
+
+std::string format_stats(const FrameStats& s) {
+  char text[320];
+  std::snprintf(text, sizeof(text),
+                "FrameStats(state='%s', confidence=%.3f, held=%s, cost=%.6g, area_similarity=%.4f, "
+                "num_detected=%d, "
+                "num_kept=%d, num_vertices=%d, num_edges=%d, num_candidates=%d, line_ms=%.3f, "
+                "grouping_ms=%.3f)",
+                s.state.c_str(), s.confidence, s.held ? "True" : "False", s.cost, s.area_similarity,
+                s.num_detected, s.num_kept, s.num_vertices, s.num_edges, s.num_candidates,
+                s.line_ms, s.grouping_ms);
+  return text;
+}
+
+}  // namespace
+
+void register_tracker(py::module_& m) {
+  py::class_<BoundaryEvidence>(
+      m, "BoundaryEvidence", "What a frame's confidence was computed from (docs/loss-handling.md).")
+      .def_readonly("gap_share", &BoundaryEvidence::gap_share,
+                    "Share of the boundary's length made of generated (gap-filling) segments.")
+      .def_readonly("edge_support", &BoundaryEvidence::edge_support,
+                    "Share of points along the boundary with a grey step across it.")
+      .def_readonly("shape_change", &BoundaryEvidence::shape_change,
+                    "Shape distance to the last confident boundary.")
+      .def_readonly("jump", &BoundaryEvidence::jump,
+                    "Centroid displacement since the previous frame over sqrt(area).")
+      .def_readonly("inside_level", &BoundaryEvidence::inside_level,
+                    "Mean grey level just inside the boundary (-1 unknown).")
+      .def("as_dict", &evidence_to_dict, "The evidence as a dict.")
+      .def("__repr__", [](const BoundaryEvidence& e) {
+        char text[200];
+        std::snprintf(text, sizeof(text),
+                      "BoundaryEvidence(gap_share=%.3f, edge_support=%.3f, shape_change=%.3f, "
+                      "jump=%.3f, inside_level=%.1f)",
+                      e.gap_share, e.edge_support, e.shape_change, e.jump, e.inside_level);
+        return std::string(text);
+      });
+
+  py::class_<FrameStats>(m, "FrameStats",
+                         "Statistics and timings of one tracked frame (see Tracker.track).")
+      .def_readonly("held", &FrameStats::held,
+                    "True when no candidate was admissible and the previous boundary was kept.")
+      .def_readonly("cost", &FrameStats::cost, "Grouping cost Γ = |B_G| / area of the choice.")
+      .def_readonly("area_similarity", &FrameStats::area_similarity,
+                    "Area similarity (Eq. 2) of the choice with the previous boundary.")
+      .def_readonly("num_detected", &FrameStats::num_detected, "Segments the detector found.")
+      .def_readonly("num_kept", &FrameStats::num_kept, "Segments passing the distance filter.")
+      .def_readonly("num_dropped", &FrameStats::num_dropped,
+                    "Segments passing the filter but dropped by max_segments.")
+      .def_readonly("num_vertices", &FrameStats::num_vertices, "Vertices of the segment graph.")
+      .def_readonly("num_edges", &FrameStats::num_edges, "Edges of the segment graph.")
+      .def_readonly("num_candidates", &FrameStats::num_candidates,
+                    "BDSP cycle candidates evaluated.")
+      .def_readonly("recovered", &FrameStats::recovered,
+                    "True when the boundary was found again where image motion moved it.")
+      .def_readonly("state", &FrameStats::state,
+                    "'tracking', 'uncertain' or 'lost' (docs/loss-handling.md).")
+      .def_readonly("confidence", &FrameStats::confidence,
+                    "How far to trust the boundary, in [0, 1]; 0 when held or lost.")
+      .def_readonly("evidence", &FrameStats::evidence,
+                    "The BoundaryEvidence the confidence was computed from.")
+      .def_readonly("reacquired", &FrameStats::reacquired,
+                    "True on the frame a lost object was found again.")
+      .def_readonly("line_ms", &FrameStats::line_ms, "Colour conversion + line detection (ms).")
+      .def_readonly("grouping_ms", &FrameStats::grouping_ms, "Filter + graph + BDSP + choice (ms).")
+      .def_property_readonly("total_ms", &FrameStats::total_ms, "line_ms + grouping_ms.")
+      .def("as_dict", &stats_to_dict, "The statistics as a dict.")
+      .def("__repr__", &format_stats);
+
+  py::class_<PyTracker>(
+      m, "Tracker",
+      "The salient closed boundary tracker.\n\n"
+      "Tracker(**options) with keyword options (paper defaults):\n"
+      "  detector='edlines' ('opencv-edlines', 'lsd', 'fld'), gradient_threshold=36,\n"
+      "  anchor_threshold=8, scan_interval=1, sigma=1.0,\n"
+      "  min_line_length=-1 (automatic), line_fit_error=1.0,\n"
+      "  crop_to_boundary=True, roi_padding=8.0, filter_distance=20.0,\n"
+      "  min_area_similarity=0.9, cost_tolerance=0.1, max_segments=1500,\n"
+      "  seed_stride=2, loss_handling=True, keep_debug=False.\n"
+      "Raises ValueError naming a bad value, TypeError for an unknown option.")
+      .def(py::init<const py::kwargs&>())
+      .def("init", &PyTracker::init, py::arg("frame"), py::arg("polygon"),
+           "Sets the initial boundary: `polygon` is an (N, 2) array inside `frame`.\n"
+           "Raises ValueError for an unusable polygon (fewer than 3 distinct vertices, no area,\n"
+           "self-crossing, outside the frame).")
+      .def("init_from_box", &PyTracker::init_from_box, py::arg("frame"), py::arg("box"),
+           "Initialises from a box (x, y, w, h) instead of a polygon: the most salient closed\n"
+           "boundary inside it (the least-Γ cycle of the segments detected there) becomes the\n"
+           "initial boundary and is returned as an (N, 2) array. Raises ValueError for a bad\n"
+           "frame or box, RuntimeError when the box holds no closed boundary.")
+      .def("track", &PyTracker::track, py::arg("frame"),
+           "Tracks the boundary into `frame` (the GIL is released meanwhile).\n"
+           "Returns (boundary, stats): an (N, 2) float64 array and a FrameStats. When no\n"
+           "candidate is admissible the previous boundary is returned and stats.held is True;\n"
+           "while stats.state is 'lost' it is the last confident boundary.")
+      .def_property_readonly("boundary", &PyTracker::boundary,
+                             "The current boundary as an (N, 2) array, None before init().")
+      .def_property_readonly("initialized", &PyTracker::initialized)
+      .def_property_readonly("options", &PyTracker::options, "The options as a dict.")
+      .def("detected_segments", &PyTracker::detected_segments,
+           "All segments detected in the last tracked frame, (M, 4) (needs keep_debug=True).")
+      .def("graph", &PyTracker::debug_graph,
+           "The last tracked frame's SegmentGraph (needs keep_debug=True).")
+      .def("annotate", &PyTracker::annotate, py::arg("frame"), py::arg("status") = py::none(),
+           "A BGR copy of `frame` with the last frame's segments and the boundary drawn as\n"
+           "`scbt track --video` draws them.");
+}
+
+}  // namespace scbt
