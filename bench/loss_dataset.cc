@@ -3,7 +3,8 @@
 // frames replaced by uniform grey (1 s at 30 fps), and 60 frames dropped (a 2 s jump). The gap
 // starts at the middle of the sequence.
 //
-//   build/bench/scbt_loss_dataset DATASET_DIR [SEQUENCE...]
+//   build/bench/scbt_loss_dataset [--trace clean|grey|jump] DATASET_DIR [SEQUENCE...]
+#include <cmath>
 #include <cstdio>
 #include <string>
 #include <vector>
@@ -32,9 +33,12 @@ struct Run {
   double success_10 = 0.0;  // clean: all frames; gaps: frames after the gap
   int delay = -1;           // frames from the end of the gap to the first right tracked frame
   double ms_mean = 0.0;
+  std::vector<double> scores;  // 1 - confidence of every frame outside the gap
+  std::vector<bool> is_wrong;  // E_AL >= 10 px, per score
 };
 
-Run run_variant(const DatasetSequence& sequence, Variant variant) {
+// trace: print one line per frame (state, confidence, evidence, error) to stderr.
+Run run_variant(const DatasetSequence& sequence, Variant variant, bool trace = false) {
   std::vector<Polygon> truth;
   for (const std::string& line : read_text_lines(sequence.ground_truth)) {
     truth.push_back(parse_polygon_line(line));
@@ -46,8 +50,8 @@ Run run_variant(const DatasetSequence& sequence, Variant variant) {
   const int gap_end = gap_start + gap_frames;  // first frame index after the gap
   Tracker tracker;
   Run run;
-  std::vector<double> scores;
-  std::vector<bool> wrong;
+  std::vector<double>& scores = run.scores;
+  std::vector<bool>& wrong = run.is_wrong;
   int after = 0, after_right = 0;
   double ms = 0.0;
   cv::Mat frame;
@@ -63,8 +67,20 @@ Run run_variant(const DatasetSequence& sequence, Variant variant) {
     ms += r.total_ms();
     ++run.frames;
     ++run.states[static_cast<int>(r.state)];
+    const double error = in_gap ? -1.0 : alignment_error(r.boundary, truth[k], frame.size());
+    if (trace) {
+      std::fprintf(stderr,
+                   "frame %d%s state %s conf %.3f gap %.3f shape %.3f support %.2f jump %.3f "
+                   "level %.0f held %d reacq %d E_AL %.2f at (%.0f, %.0f) size %.0f truth (%.0f, "
+                   "%.0f) size %.0f\n",
+                   k + 1, in_gap ? " (gap)" : "", to_string(r.state).c_str(), r.confidence,
+                   r.evidence.gap_share, r.evidence.shape_change, r.evidence.edge_support,
+                   r.evidence.jump, r.evidence.inside_level, r.held ? 1 : 0, r.reacquired ? 1 : 0,
+                   error, centroid(r.boundary).x, centroid(r.boundary).y,
+                   std::sqrt(area(r.boundary)), centroid(truth[k]).x, centroid(truth[k]).y,
+                   std::sqrt(area(truth[k])));
+    }
     if (in_gap) continue;
-    const double error = alignment_error(r.boundary, truth[k], frame.size());
     const bool is_wrong = !(error < kWrongPx);
     run.wrong += is_wrong ? 1 : 0;
     scores.push_back(1.0 - r.confidence);
@@ -89,15 +105,44 @@ Run run_variant(const DatasetSequence& sequence, Variant variant) {
 
 int main(int argc, char** argv) {
   using namespace scbt;
-  if (argc < 2) {
-    std::fprintf(stderr, "usage: %s DATASET_DIR [SEQUENCE...]\n", argv[0]);
+  std::vector<std::string> args(argv + 1, argv + argc);
+  // --trace clean|grey|jump: one line per frame of that variant to stderr, and only that variant.
+  std::string trace;
+  for (size_t i = 0; i + 1 < args.size(); ++i) {
+    if (args[i] == "--trace") {
+      trace = args[i + 1];
+      args.erase(args.begin() + i, args.begin() + i + 2);
+      break;
+    }
+  }
+  if (args.empty() || !(trace.empty() || trace == "clean" || trace == "grey" || trace == "jump")) {
+    std::fprintf(stderr, "usage: %s [--trace clean|grey|jump] DATASET_DIR [SEQUENCE...]\n",
+                 argv[0]);
     return 2;
   }
-  const std::vector<std::string> names(argv + 2, argv + argc);
+  const std::vector<std::string> names(args.begin() + 1, args.end());
+  const std::vector<DatasetSequence> sequences = select_dataset_sequences(args[0], names);
+  if (!trace.empty()) {
+    const Variant variant = trace == "clean"  ? Variant::kClean
+                            : trace == "grey" ? Variant::kGrey
+                                              : Variant::kJump;
+    for (const DatasetSequence& sequence : sequences) {
+      const Run run = run_variant(sequence, variant, /*trace=*/true);
+      std::printf("%s %s: delay %d, S@10 %.3f, AUC %.3f\n", sequence.name.c_str(), trace.c_str(),
+                  run.delay, run.success_10, run.auc);
+    }
+    return 0;
+  }
   std::printf(
       "| sequence | frames | E_AL>=10 | AUC | S@10 | tracking/uncertain/lost | ms | grey: delay, "
       "S@10 after | jump: delay, S@10 after |\n|---|---:|---:|---:|---:|---|---:|---|---|\n");
-  for (const DatasetSequence& sequence : select_dataset_sequences(argv[1], names)) {
+  std::vector<double> clean_scores, all_scores;
+  std::vector<bool> clean_wrong, all_wrong;
+  auto pool = [](const Run& run, std::vector<double>* scores, std::vector<bool>* wrong) {
+    scores->insert(scores->end(), run.scores.begin(), run.scores.end());
+    wrong->insert(wrong->end(), run.is_wrong.begin(), run.is_wrong.end());
+  };
+  for (const DatasetSequence& sequence : sequences) {
     const Run clean = run_variant(sequence, Variant::kClean);
     const Run grey = run_variant(sequence, Variant::kGrey);
     const Run jump = run_variant(sequence, Variant::kJump);
@@ -106,6 +151,11 @@ int main(int argc, char** argv) {
                 clean.states[0], clean.states[1], clean.states[2], clean.ms_mean, grey.delay,
                 grey.success_10, jump.delay, jump.success_10);
     std::fflush(stdout);
+    pool(clean, &clean_scores, &clean_wrong);
+    for (const Run* run : {&clean, &grey, &jump}) pool(*run, &all_scores, &all_wrong);
   }
+  std::printf("\npooled AUC: clean %.3f, clean + gap variants %.3f\n",
+              roc_auc(clean_scores, clean_wrong).value_or(-1.0),
+              roc_auc(all_scores, all_wrong).value_or(-1.0));
   return 0;
 }

@@ -45,6 +45,8 @@ std::vector<Placement> Reacquirer::rank(const Polygon& outline,
                                         const std::vector<Segment>& segments, cv::Size frame_size,
                                         const PlacementOptions& options) {
   std::vector<Placement> placements;
+  std::vector<Point> picked_centers;
+  std::vector<double> picked_scales;
   const double size = std::sqrt(area(outline));
   if (segments.empty() || outline.size() < 3 || !(size > 0.0)) return placements;
 
@@ -100,23 +102,31 @@ std::vector<Placement> Reacquirer::rank(const Polygon& outline,
   std::sort(scored.begin(), scored.end(),
             [](const Scored& a, const Scored& b) { return a.chamfer < b.chamfer; });
 
-  // Greedy picks, best first, apart from the ones already picked.
-  const double separation = 0.5 * size;
+  // Greedy picks, best first, apart from the ones already picked: a placement a quarter of the
+  // object's size away, or a scale step away, is another hypothesis (a wider exclusion lets a
+  // look-alike part of the clutter next to the object hide the object itself).
+  const double separation = 0.25 * size;
   auto pick = [&](bool near, int count) {
     for (const Scored& s : scored) {
       if (count <= 0) return;
       const bool is_near = cv::norm(s.center - home) <= size;
       if (near && !is_near) continue;
       bool apart = true;
-      for (const Placement& p : placements) {
-        apart = apart && cv::norm(centroid(p.outline) - s.center) >= separation;
+      for (size_t i = 0; i < placements.size() && apart; ++i) {
+        const double ratio =
+            std::max(s.scale, picked_scales[i]) / std::min(s.scale, picked_scales[i]);
+        apart = cv::norm(picked_centers[i] - s.center) >= separation * s.scale ||
+                ratio > kScaleStep * 1.0001;
       }
       if (!apart) continue;
       Placement placement;
       placement.chamfer = s.chamfer;
       placement.near = is_near;
+      placement.scale = s.scale;
       for (const Point& v : outline) placement.outline.push_back(s.center + (v - home) * s.scale);
       placements.push_back(std::move(placement));
+      picked_centers.push_back(s.center);
+      picked_scales.push_back(s.scale);
       --count;
     }
   };

@@ -16,6 +16,7 @@ struct Placement {
   Polygon outline;       // the template moved (and scaled) there: the prior of a search
   double chamfer = 0.0;  // mean distance (pixels, capped) from the outline's samples to a segment
   bool near = false;     // within the near region of the last position
+  double scale = 1.0;    // of the outline against the template
 };
 
 struct PlacementOptions {
@@ -37,8 +38,8 @@ class Reacquirer {
  public:
   // The best placements of `outline` over the segments: up to near_tries within one outline
   // size of its current position, then up to frame_tries anywhere (near ones included), best
-  // first,
-  // no two placements closer than half the outline's size. Empty when there are no segments.
+  // first, no two of the same scale closer than a quarter of the outline's size. Empty when there
+  // are no segments.
   std::vector<Placement> rank(const Polygon& outline, const std::vector<Segment>& segments,
                               cv::Size frame_size, const PlacementOptions& options);
 

@@ -31,6 +31,10 @@ void LossOptions::check() const {
     throw std::invalid_argument("misses_to_lost must be in 1..1000, got " +
                                 std::to_string(misses_to_lost));
   }
+  if (!(reacquire_confidence >= tracking_confidence && reacquire_confidence <= 1.0)) {
+    throw std::invalid_argument("reacquire_confidence must be in [tracking_confidence, 1], got " +
+                                std::to_string(reacquire_confidence));
+  }
   if (!(match_shape_distance > 0.0 && match_shape_distance <= 1.0)) {
     throw std::invalid_argument("match_shape_distance must be in (0, 1], got " +
                                 std::to_string(match_shape_distance));
@@ -76,7 +80,7 @@ void LossMonitor::reset(const Polygon& boundary, double inside_level) {
 
 bool LossMonitor::matches(const Polygon& cycle, const BoundaryEvidence& evidence,
                           double confidence) const {
-  if (confidence < options_.tracking_confidence) return false;
+  if (confidence < options_.reacquire_confidence) return false;
   if (reference_level_ >= 0.0 && evidence.inside_level >= 0.0 &&
       std::abs(evidence.inside_level - reference_level_) > options_.max_level_change) {
     return false;

@@ -34,8 +34,10 @@ struct LossOptions {
   int misses_to_lost = 3;
   // While lost, a closed cycle is taken as the object found again when its shape_distance to the
   // last confident boundary is at most this (an ellipse of aspect 1.1 against a circle: 0.024)
-  // and its confidence at least tracking_confidence.
+  // and its confidence at least reacquire_confidence: a search over the whole frame tests many
+  // more cycles than tracking does, so a look-alike passes a tracking-level bar far more often.
   double match_shape_distance = 0.05;
+  double reacquire_confidence = 0.9;
   // ... and when the grey level just inside it is within this of the last confident boundary's
   // (a textureless object keeps its level; a look-alike outline in the clutter rarely does).
   double max_level_change = 30.0;
@@ -73,7 +75,13 @@ class LossMonitor {
   bool matches(const Polygon& cycle, const BoundaryEvidence& evidence, double confidence) const;
 
   TrackState state() const { return state_; }
+  // The shape searched for while lost: the oldest of the last confident frames (see history_).
   const Polygon& last_confident() const { return last_confident_; }
+  // The newest confident boundary: the output while lost (where the object was last seen).
+  const Polygon& latest_confident() const {
+    return history_size_ > 0 ? history_[(history_next_ + kHistory - 1) % kHistory].boundary
+                             : last_confident_;
+  }
   const ShapeDescriptor& reference() const { return reference_; }
   const LossOptions& options() const { return options_; }
 

@@ -241,8 +241,8 @@ TrackResult Tracker::track(const cv::Mat& frame) {
   }
   result.state = monitor_.update(boundary_, result.confidence, result.held, result.evidence);
   if (result.state == TrackState::kLost) {
-    // No confident output while lost: back to the last confident boundary.
-    boundary_ = monitor_.last_confident();
+    // No confident output while lost: back to the newest confident boundary.
+    boundary_ = monitor_.latest_confident();
     boundary_area_ = area(boundary_);
   }
 

@@ -133,6 +133,8 @@ class Tracker {
   // A cycle that matched while lost, waiting for LossOptions::confirm_frames matches in a row.
   Polygon pending_;
   int pending_matches_ = 0;
+  SegmentGraph match_graph_;  // the graph the best match while lost was found in
+  int match_kept_ = 0;
   StableChooser chooser_;  // its buffers and distance cache are reused frame to frame
   bool keep_debug_ = false;
   TrackDebug debug_;

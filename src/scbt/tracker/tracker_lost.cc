@@ -54,15 +54,21 @@ TrackResult Tracker::track_lost(const cv::Mat& frame) {
   placement_options.frame_tries = loss.frame_tries;
   std::vector<Placement> placements =
       reacquirer_.rank(monitor_.last_confident(), segments, frame_size_, placement_options);
-  // Last frame's match is searched for first, where it was.
-  if (!pending_.empty()) placements.insert(placements.begin(), Placement{pending_, 0.0, true});
+  // First where it was last seen, as it was (a blank or occluded stretch rarely moves it far),
+  // and before that last frame's match, where it was found.
+  placements.insert(placements.begin(), Placement{monitor_.latest_confident(), 0.0, true, 1.0});
+  if (!pending_.empty()) placements.insert(placements.begin(), Placement{pending_, 0.0, true, 1.0});
   result.stages.recovery_ms = elapsed_ms(rank_start);
   result.grouping_ms = result.stages.recovery_ms;
 
+  // Every placement is searched and the best match kept (a look-alike found first must not hide
+  // the object found later); last frame's match found again is taken at once.
   const double similarity = std::min(options_.min_area_similarity, kSearchSimilarity);
   Attempt* a = &attempts_[1];
   Polygon match;
-  for (const Placement& placement : placements) {
+  double best_score = 0.0;
+  for (size_t i = 0; i < placements.size(); ++i) {
+    const Placement& placement = placements[i];
     attempt(frame, placement.outline, a, similarity);
     result.line_ms += a->line_ms;
     result.grouping_ms += a->grouping_ms;
@@ -72,13 +78,20 @@ TrackResult Tracker::track_lost(const cv::Mat& frame) {
     const BoundaryEvidence evidence = evidence_of(*a, cycle, placement.outline);
     const double confidence = options_.confidence(evidence);
     if (!monitor_.matches(cycle, evidence, confidence)) continue;
+    const double shape = shape_distance(shape_descriptor(cycle), monitor_.reference());
+    // Both terms are in [0, 1] for a match: how close the shape is, how sure the cycle is.
+    const double score = shape / loss.match_shape_distance + (1.0 - confidence);
+    if (!match.empty() && score >= best_score) continue;
+    best_score = score;
     result.evidence = evidence;
     result.confidence = confidence;
     result.cost = a->choice->cost;
     result.area_similarity =
         area_similarity(area(monitor_.last_confident()), a->cycles->area(a->choice->index));
     match = std::move(cycle);
-    break;
+    match_graph_ = a->graph;
+    match_kept_ = static_cast<int>(a->kept.size());
+    if (i == 0 && !pending_.empty()) break;
   }
   result.num_detected = static_cast<int>(segments.size());
   if (keep_debug_) debug_.detected = segments;
@@ -112,10 +125,10 @@ TrackResult Tracker::track_lost(const cv::Mat& frame) {
   reference_roi_ = cv::Rect(cv::Point(0, 0), frame_size_);
   search_gray_.copyTo(reference_gray_);
   result.boundary = boundary_;
-  result.num_kept = static_cast<int>(a->kept.size());
-  result.num_vertices = a->graph.num_vertices();
-  result.num_edges = a->graph.num_edges();
-  if (keep_debug_) debug_.graph = a->graph;
+  result.num_kept = match_kept_;
+  result.num_vertices = match_graph_.num_vertices();
+  result.num_edges = match_graph_.num_edges();
+  if (keep_debug_) debug_.graph = match_graph_;
   return result;
 }
 
