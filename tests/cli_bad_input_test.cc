@@ -24,55 +24,24 @@
 #include <thread>
 #include <vector>
 
+#include "cli_test_util.h"
 #include "scbt/geometry/polygon_io.h"
 #include "scbt/io/avi_test_util.h"
 #include "scbt/synthetic/scene.h"
-
-#ifndef SCBT_BINARY
-#error "SCBT_BINARY must name the scbt executable"
-#endif
 
 namespace scbt {
 namespace {
 
 namespace fs = std::filesystem;
 
-std::string read_file(const fs::path& path) {
-  std::ifstream file(path, std::ios::binary);
-  std::stringstream text;
-  text << file.rdbuf();
-  return text.str();
-}
-
-std::vector<std::string> read_text_lines_of(const std::string& text) {
-  std::vector<std::string> lines;
-  std::istringstream stream(text);
-  for (std::string line; std::getline(stream, line);) lines.push_back(line);
-  return lines;
-}
-
 void write_file(const fs::path& path, const std::string& content) {
   std::ofstream(path, std::ios::binary) << content;
 }
 
-struct RunResult {
-  int exit_code = -1;
-  std::string err;  // stderr
-};
-
-// Runs scbt with `args` (already shell-quoted) in `dir`, capturing stderr; `prefix` is shell
-// code run first in the same shell (limits, traps).
-RunResult run_scbt(const fs::path& dir, const std::string& args, const std::string& prefix = "") {
-  const fs::path err = dir / "stderr.txt";
-  const std::string command = "cd '" + dir.string() + "' && " + prefix + " '" +
-                              std::string(SCBT_BINARY) + "' " + args + " 2> '" + err.string() +
-                              "' > /dev/null";
-  const int status = std::system(command.c_str());
-  RunResult result;
-  result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : 1000 + WTERMSIG(status);
-  result.err = read_file(err);
-  return result;
-}
+using cli_test::read_file;
+using cli_test::read_text_lines_of;
+using cli_test::run_scbt;
+using cli_test::RunResult;
 
 // A small synthetic sequence whose first-frame boundary is known.
 struct Sequence {

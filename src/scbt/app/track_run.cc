@@ -78,8 +78,8 @@ const char* signal_name(int signal_number) {
 }
 
 void write_csv_header(std::ostream& csv) {
-  csv << "frame,held,cost,area_similarity,detected,kept,vertices,edges,candidates,line_ms,"
-         "grouping_ms,total_ms,note\n";
+  csv << "frame,held,state,confidence,cost,area_similarity,detected,kept,vertices,edges,"
+         "candidates,line_ms,grouping_ms,total_ms,note\n";
 }
 
 // The note is free text: quoted, with inner quotes doubled, when it holds a comma or quote.
@@ -96,10 +96,10 @@ std::string csv_field(const std::string& text) {
 
 void write_csv_row(std::ostream& csv, int frame, const TrackResult& r, const std::string& note) {
   char line[256];
-  std::snprintf(line, sizeof(line), "%d,%d,%.6g,%.6g,%d,%d,%d,%d,%d,%.4f,%.4f,%.4f,", frame,
-                r.held ? 1 : 0, r.cost, r.area_similarity, r.num_detected, r.num_kept,
-                r.num_vertices, r.num_edges, r.num_candidates, r.line_ms, r.grouping_ms,
-                r.total_ms());
+  std::snprintf(line, sizeof(line), "%d,%d,%s,%.4f,%.6g,%.6g,%d,%d,%d,%d,%d,%.4f,%.4f,%.4f,", frame,
+                r.held ? 1 : 0, to_string(r.state).c_str(), r.confidence, r.cost, r.area_similarity,
+                r.num_detected, r.num_kept, r.num_vertices, r.num_edges, r.num_candidates,
+                r.line_ms, r.grouping_ms, r.total_ms());
   csv << line << csv_field(note) << '\n';
 }
 
@@ -111,7 +111,10 @@ std::string frame_note(const TrackResult& r, const cv::Size& size) {
     add("segments capped: " + std::to_string(r.num_dropped) + " of " +
         std::to_string(r.num_kept + r.num_dropped) + " near the boundary dropped");
   }
-  if (r.held) {
+  if (r.reacquired) add("re-acquired: the lost object was found again");
+  if (r.state == TrackState::kLost) {
+    add("lost: the last confident boundary is repeated");
+  } else if (r.held) {
     if (r.num_detected == 0) {
       add("held: no segments detected");
     } else if (r.num_kept == 0) {
@@ -139,8 +142,11 @@ BadFramePolicy parse_bad_frame_policy(const std::string& name) {
 }
 
 Polygon load_initial_polygon(const TrackRunOptions& options) {
-  if (options.init_file.empty() == options.init_points.empty()) {
-    throw std::invalid_argument("give exactly one of --init FILE or --init-points \"x,y ...\"");
+  const int given = (options.init_file.empty() ? 0 : 1) + (options.init_points.empty() ? 0 : 1) +
+                    (options.init_box.empty() ? 0 : 1);
+  if (given != 1 || !options.init_box.empty()) {
+    throw std::invalid_argument(
+        "give exactly one of --init FILE, --init-points \"x,y ...\" or --init-box x,y,w,h");
   }
   if (!options.init_file.empty()) return read_first_polygon(options.init_file);
   try {
@@ -150,12 +156,181 @@ Polygon load_initial_polygon(const TrackRunOptions& options) {
   }
 }
 
-TrackSummary run_track(const TrackRunOptions& options, std::ostream& log) {
+cv::Rect parse_init_box(const std::string& text) {
+  int values[4];
+  char end = 0;
+  const int read = std::sscanf(text.c_str(), "%d , %d , %d , %d %c", &values[0], &values[1],
+                               &values[2], &values[3], &end);
+  if (read != 4) {
+    throw std::invalid_argument("--init-box must be four integers x,y,w,h (pixels), got '" + text +
+                                "'");
+  }
+  if (values[2] <= 0 || values[3] <= 0) {
+    throw std::invalid_argument("--init-box: the box " + text + " is empty (w and h must be > 0)");
+  }
+  return cv::Rect(values[0], values[1], values[2], values[3]);
+}
+
+namespace {
+
+// Reads the frames before `start_frame` (1-based) and the start frame itself into `frame`. A
+// skipped frame that cannot be decoded is not tracked, so it is not an error.
+void read_start_frame(FrameSource* source, const TrackRunOptions& options, cv::Mat* frame) {
+  const int count = source->frame_count();
+  const auto beyond = [&options](int frames) {
+    return std::invalid_argument("--start-frame " + std::to_string(options.start_frame) +
+                                 " is beyond the input: " + options.input + " has " +
+                                 std::to_string(frames) + " frame(s)");
+  };
+  if (count > 0 && options.start_frame > count) throw beyond(count);
+  for (int skipped = 0; skipped < options.start_frame - 1; ++skipped) {
+    try {
+      if (!source->read(frame)) throw beyond(skipped);
+    } catch (const std::runtime_error&) {
+      // undecodable, but not tracked
+    }
+  }
+  if (!source->read(frame)) {
+    if (options.start_frame > 1) throw beyond(options.start_frame - 1);
+    throw std::runtime_error(options.input + ": no frames");
+  }
+}
+
+// Initialises the tracker on the first frame from --init / --init-points (`polygon`) or from
+// --init-box; returns the initial boundary. Errors name where the boundary came from: a file's
+// content (std::runtime_error, exit 1) or the command line (std::invalid_argument, exit 2).
+Polygon initialise(Tracker* tracker, const cv::Mat& frame, const Polygon& polygon,
+                   const TrackRunOptions& options, const std::string& frame_name) {
+  const std::string where = " (first frame " + frame_name + ")";
+  if (!options.init_box.empty()) {
+    const cv::Rect box = parse_init_box(options.init_box);
+    try {
+      return tracker->init_from_box(frame, box);
+    } catch (const std::invalid_argument& e) {
+      throw std::invalid_argument("--init-box: " + std::string(e.what()) + where);
+    } catch (const std::runtime_error& e) {
+      throw std::runtime_error("--init-box " + options.init_box + ": " + e.what() + where);
+    }
+  }
+  try {
+    tracker->init(frame, polygon);
+  } catch (const std::invalid_argument& e) {
+    const std::string detail = std::string("initial polygon: ") + e.what() + where;
+    if (!options.init_file.empty()) throw std::runtime_error(options.init_file + ":1: " + detail);
+    throw std::invalid_argument("--init-points: " + detail);
+  }
+  return polygon;
+}
+
+void check_track_options(const TrackRunOptions& options) {
   if (options.output.empty()) throw std::invalid_argument("--output is required");
   if (options.max_frames < 0) {
     throw std::invalid_argument("--max-frames must be >= 0, got " +
                                 std::to_string(options.max_frames));
   }
+  if (options.start_frame < 1) {
+    throw std::invalid_argument("--start-frame is 1-based (1: the first frame), got " +
+                                std::to_string(options.start_frame));
+  }
+  if (!options.init_box.empty()) {
+    if (!options.init_file.empty() || !options.init_points.empty()) {
+      throw std::invalid_argument("--init-box cannot be combined with --init or --init-points");
+    }
+    parse_init_box(options.init_box);  // a malformed box fails before any work
+  }
+  options.depth.check();
+}
+
+// The outputs of a run, all opened before the first frame (a folder, a missing folder or a video
+// name without a container fails here); none replaces an old file before commit().
+struct TrackOutputs {
+  OutputSet set;
+  OutputFile* results = nullptr;
+  OutputFile* csv = nullptr;
+  VideoOutput* video = nullptr;
+  FrameFolderOutput* frames_out = nullptr;
+  std::unique_ptr<DepthTrackOutput> depth;
+
+  TrackOutputs(const TrackRunOptions& options, double fps) {
+    results = &set.add_file(options.output);
+    if (!options.csv.empty()) csv = &set.add_file(options.csv);
+    if (!options.video.empty()) video = &set.add_video(options.video, fps);
+    if (!options.frames_out.empty()) frames_out = &set.add_frame_folder(options.frames_out);
+    if (options.depth.enabled()) depth = std::make_unique<DepthTrackOutput>(options.depth, &set);
+  }
+  bool annotate() const { return video != nullptr || frames_out != nullptr; }
+  void annotation(cv::Mat image, int frame_number) {
+    if (depth) depth->draw(&image);
+    if (video) video->write(image);
+    if (frames_out) frames_out->write(frame_number, image);
+  }
+};
+
+// The caption of an annotated frame: number, state, confidence, time and the chosen cycle.
+std::string frame_caption(int frame_number, const TrackResult& r) {
+  char status[200];
+  std::snprintf(status, sizeof(status), "frame %d  %s%s  conf %.2f  %.2f ms  cost %.4f  sim %.3f",
+                frame_number, to_string(r.state).c_str(), r.reacquired ? " (re-acquired)" : "",
+                r.confidence, r.total_ms(), r.cost, r.area_similarity);
+  return status;
+}
+
+void add_to_summary(const TrackResult& r, TrackSummary* summary, double* total_ms) {
+  ++summary->tracked;
+  summary->held += r.held ? 1 : 0;
+  summary->lost += r.state == TrackState::kLost ? 1 : 0;
+  summary->mean_line_ms += r.line_ms;
+  summary->mean_grouping_ms += r.grouping_ms;
+  summary->mean_vertices += r.num_vertices;
+  summary->mean_edges += r.num_edges;
+  *total_ms += r.total_ms();
+}
+
+void finish_summary(double total_ms, TrackSummary* summary) {
+  if (summary->tracked == 0) return;
+  const double n = summary->tracked;
+  summary->mean_line_ms /= n;
+  summary->mean_grouping_ms /= n;
+  summary->mean_vertices /= n;
+  summary->mean_edges /= n;
+  summary->fps = total_ms > 0 ? 1000.0 * n / total_ms : 0.0;
+}
+
+// The warnings at the end of a run: interrupted, bad frames, frames the input announced but did
+// not give (those count as bad frames: exit code 3).
+void report_end(const TrackRunOptions& options, std::ostream& log, TrackSummary* summary) {
+  const int last = summary->start_frame + summary->frames - 1;
+  const std::string held_frames =
+      "frames " + std::to_string(summary->start_frame) + ".." + std::to_string(last);
+  if (summary->stop_signal == SIGPIPE) {
+    log << "scbt: warning: the reader of a streamed output went away (EPIPE) after frame " << last
+        << "; the other outputs hold " << held_frames << "\n";
+  } else if (summary->stop_signal != 0) {
+    log << "scbt: warning: interrupted by " << signal_name(summary->stop_signal) << " after frame "
+        << last;
+    if (summary->expected_frames > 0) {
+      log << " of " << summary->start_frame + summary->expected_frames - 1;
+    }
+    log << "; " << printable(options.output) << " holds " << held_frames << "\n";
+  }
+  if (summary->bad_frames > 0) {
+    log << "scbt: warning: " << summary->bad_frames << " bad frame(s) reported and held\n";
+  }
+  const bool cut_short = options.max_frames > 0 && summary->frames >= options.max_frames;
+  if (summary->stop_signal == 0 && !cut_short && summary->expected_frames > 0 &&
+      summary->frames < summary->expected_frames) {
+    // Frames lost without a trace (no timestamp gap) cannot be placed: later lines may be early.
+    log << "scbt: warning: " << printable(options.input) << " gave " << last << " of the "
+        << summary->start_frame + summary->expected_frames - 1
+        << " frames it announced (it ended early, or frames were lost in decoding)\n";
+    summary->bad_frames += summary->expected_frames - summary->frames;
+  }
+}
+
+}  // namespace
+
+TrackSummary run_track(const TrackRunOptions& options, std::ostream& log) {
+  check_track_options(options);
   // Before anything is read or written: no output may overwrite an input or another output.
   std::vector<NamedPath> inputs = {{"INPUT", options.input}};
   if (!options.init_file.empty()) inputs.push_back({"--init", options.init_file});
@@ -164,144 +339,95 @@ TrackSummary run_track(const TrackRunOptions& options, std::ostream& log) {
   if (!options.video.empty()) outputs.push_back({"--video", options.video});
   std::vector<NamedPath> output_folders;
   if (!options.frames_out.empty()) output_folders.push_back({"--frames-out", options.frames_out});
+  add_depth_paths(options.depth, &inputs, &outputs);
   check_no_overwrite(inputs, outputs, output_folders);
 
-  const Polygon initial = load_initial_polygon(options);
+  const Polygon polygon = options.init_box.empty() ? load_initial_polygon(options) : Polygon{};
   Tracker tracker(options.tracker);
   const StopSignalScope signal_scope(options.handle_signals);
-  std::unique_ptr<FrameSource> source = open_frame_source(options.input);
-  // Every output is classified and opened before the first frame (a folder, a missing folder or
-  // a video name without a container fails here); none replaces an old file before commit().
-  OutputSet output_set;
-  OutputFile& results = output_set.add_file(options.output);
-  OutputFile* csv = options.csv.empty() ? nullptr : &output_set.add_file(options.csv);
-  VideoOutput* video =
-      options.video.empty() ? nullptr : &output_set.add_video(options.video, source->fps());
-  FrameFolderOutput* frames_out =
-      options.frames_out.empty() ? nullptr : &output_set.add_frame_folder(options.frames_out);
+  std::unique_ptr<FrameSource> source = open_colour_source(options.input, options.depth);
+  TrackOutputs out(options, source->fps());
 
   cv::Mat frame;
-  if (!source->read(&frame)) throw std::runtime_error(options.input + ": no frames");
-  try {
-    tracker.init(frame, initial);
-  } catch (const std::invalid_argument& e) {
-    // Named by where the polygon came from: a file's content (exit 1) or the command line (2).
-    const std::string detail = std::string("initial polygon: ") + e.what() + " (first frame " +
-                               source->current_name() + ")";
-    if (!options.init_file.empty()) throw std::runtime_error(options.init_file + ":1: " + detail);
-    throw std::invalid_argument("--init-points: " + detail);
-  }
-  const bool annotate = !options.video.empty() || !options.frames_out.empty();
-  tracker.set_keep_debug(annotate);
+  read_start_frame(source.get(), options, &frame);
+  const Polygon initial = initialise(&tracker, frame, polygon, options, source->current_name());
+  tracker.set_keep_debug(out.annotate());
 
-  if (csv) write_csv_header(csv->stream());
-  results.stream() << format_polygon_line(initial) << '\n';
-  output_set.end_record();
+  if (out.csv) write_csv_header(out.csv->stream());
+  out.results->stream() << format_polygon_line(initial) << '\n';
+  TrackResult first;
+  first.boundary = initial;
+  first.confidence = 1.0;
+  if (out.depth) out.depth->write(options.start_frame, &first, frame.size());
+  out.set.end_record();
   TrackSummary summary;
   summary.frames = 1;
-  summary.expected_frames = source->frame_count();
+  summary.start_frame = options.start_frame;
+  if (source->frame_count() > 0) {
+    summary.expected_frames = source->frame_count() - (options.start_frame - 1);
+  }
   double total_ms = 0.0;
-  ProgressBar progress(log, "tracking", source->frame_count(), !options.quiet);
-
-  auto emit_annotation = [&](const cv::Mat& image, int index) {
-    if (video) video->write(image);
-    if (frames_out) frames_out->write(index, image);
-  };
-
-  {
-    if (annotate) {
-      TrackResult first;
-      first.boundary = initial;
-      emit_annotation(annotate_frame(frame, {}, first, "frame 1: initial boundary"), 1);
+  ProgressBar progress(log, "tracking", summary.expected_frames, !options.quiet);
+  if (out.annotate()) {
+    out.annotation(
+        annotate_frame(frame, {}, first,
+                       "frame " + std::to_string(options.start_frame) + ": initial boundary"),
+        options.start_frame);
+  }
+  TrackState last_state = TrackState::kTracking;
+  while (options.max_frames <= 0 || summary.frames < options.max_frames) {
+    if (g_stop_signal != 0 || out.set.reader_gone()) break;
+    // A frame that cannot be decoded or does not fit (size, pixel format) is bad: reported,
+    // and either held (its line repeats the boundary) or fatal, by policy.
+    std::string bad;
+    TrackResult r;
+    try {
+      if (!source->read(&frame)) break;
+      r = tracker.track(frame);
+    } catch (const std::runtime_error& e) {
+      bad = e.what();
+    } catch (const std::invalid_argument& e) {
+      bad = source->current_name() + ": " + e.what();
     }
-    while (options.max_frames <= 0 || summary.frames < options.max_frames) {
-      if (g_stop_signal != 0 || output_set.reader_gone()) break;
-      // A frame that cannot be decoded or does not fit (size, pixel format) is bad: reported,
-      // and either held (its line repeats the boundary) or fatal, by policy.
-      std::string bad;
-      TrackResult r;
-      try {
-        if (!source->read(&frame)) break;
-        r = tracker.track(frame);
-      } catch (const std::runtime_error& e) {
-        bad = e.what();
-      } catch (const std::invalid_argument& e) {
-        bad = source->current_name() + ": " + e.what();
+    ++summary.frames;
+    const int number = options.start_frame + summary.frames - 1;  // in the input, 1-based
+    if (!bad.empty()) {
+      if (options.on_bad_frame == BadFramePolicy::kStop) {
+        throw std::runtime_error(bad + " (frame " + std::to_string(number) +
+                                 "; --on-bad-frame=stop)");
       }
-      ++summary.frames;
-      if (!bad.empty()) {
-        if (options.on_bad_frame == BadFramePolicy::kStop) {
-          throw std::runtime_error(bad + " (frame " + std::to_string(summary.frames) +
-                                   "; --on-bad-frame=stop)");
-        }
-        ++summary.bad_frames;
-        if (!options.quiet) log << '\n';
-        log << "scbt: warning: " << printable(bad) << " (frame " << summary.frames
-            << "); boundary held\n";
-        r = TrackResult();
-        r.boundary = tracker.boundary();
-        r.held = true;
-        results.stream() << format_polygon_line(r.boundary) << '\n';
-        if (csv) write_csv_row(csv->stream(), summary.frames, r, "bad frame: " + bad);
-        output_set.end_record();
-        progress.update(summary.frames);
-        continue;
-      }
-      ++summary.tracked;
-      summary.held += r.held ? 1 : 0;
-      summary.mean_line_ms += r.line_ms;
-      summary.mean_grouping_ms += r.grouping_ms;
-      summary.mean_vertices += r.num_vertices;
-      summary.mean_edges += r.num_edges;
-      total_ms += r.total_ms();
-      results.stream() << format_polygon_line(r.boundary) << '\n';
-      if (csv) write_csv_row(csv->stream(), summary.frames, r, frame_note(r, frame.size()));
-      if (annotate) {
-        char status[160];
-        std::snprintf(status, sizeof(status), "frame %d  %s  %.2f ms  cost %.4f  sim %.3f",
-                      summary.frames, r.held ? "HELD" : "tracked", r.total_ms(), r.cost,
-                      r.area_similarity);
-        emit_annotation(annotate_frame(frame, tracker.debug(), r, status), summary.frames);
-      }
-      output_set.end_record();
+      ++summary.bad_frames;
+      if (!options.quiet) log << '\n';
+      log << "scbt: warning: " << printable(bad) << " (frame " << number << "); boundary held\n";
+      // The tracker did not see the frame: no confidence; lost stays lost.
+      r = TrackResult();
+      r.boundary = tracker.boundary();
+      r.held = true;
+      r.state = last_state == TrackState::kLost ? TrackState::kLost : TrackState::kUncertain;
+      out.results->stream() << format_polygon_line(r.boundary) << '\n';
+      if (out.csv) write_csv_row(out.csv->stream(), number, r, "bad frame: " + bad);
+      if (out.depth) out.depth->write(number, nullptr, frame.size());
+      out.set.end_record();
       progress.update(summary.frames);
+      continue;
     }
+    last_state = r.state;
+    add_to_summary(r, &summary, &total_ms);
+    out.results->stream() << format_polygon_line(r.boundary) << '\n';
+    if (out.csv) write_csv_row(out.csv->stream(), number, r, frame_note(r, frame.size()));
+    if (out.depth) out.depth->write(number, &r, frame.size());
+    if (out.annotate()) {
+      out.annotation(annotate_frame(frame, tracker.debug(), r, frame_caption(number, r)), number);
+    }
+    out.set.end_record();
+    progress.update(summary.frames);
   }
   progress.finish(summary.frames);
   summary.stop_signal = g_stop_signal;
-  if (summary.stop_signal == 0 && output_set.reader_gone()) summary.stop_signal = SIGPIPE;
-
-  if (summary.tracked > 0) {
-    const double n = summary.tracked;
-    summary.mean_line_ms /= n;
-    summary.mean_grouping_ms /= n;
-    summary.mean_vertices /= n;
-    summary.mean_edges /= n;
-    summary.fps = total_ms > 0 ? 1000.0 * n / total_ms : 0.0;
-  }
-  output_set.commit();
-  if (summary.stop_signal == SIGPIPE) {
-    log << "scbt: warning: the reader of a streamed output went away (EPIPE) after frame "
-        << summary.frames << "; the other outputs hold frames 1.." << summary.frames << "\n";
-  } else if (summary.stop_signal != 0) {
-    log << "scbt: warning: interrupted by " << signal_name(summary.stop_signal) << " after frame "
-        << summary.frames;
-    if (summary.expected_frames > 0) log << " of " << summary.expected_frames;
-    log << "; " << printable(options.output) << " holds frames 1.." << summary.frames << "\n";
-  }
-  if (summary.bad_frames > 0) {
-    log << "scbt: warning: " << summary.bad_frames << " bad frame(s) reported and held\n";
-  }
-  const bool cut_short = options.max_frames > 0 && summary.frames >= options.max_frames;
-  if (summary.stop_signal == 0 && !cut_short && summary.expected_frames > 0 &&
-      summary.frames < summary.expected_frames) {
-    // Frames lost without a trace (no timestamp gap) cannot be placed: later lines may be early.
-    // They count as bad frames (exit code 3).
-    log << "scbt: warning: " << printable(options.input) << " gave " << summary.frames << " of the "
-        << summary.expected_frames
-        << " frames it announced (it ended early, or frames were lost in decoding)\n";
-    summary.bad_frames += summary.expected_frames - summary.frames;
-  }
+  if (summary.stop_signal == 0 && out.set.reader_gone()) summary.stop_signal = SIGPIPE;
+  finish_summary(total_ms, &summary);
+  out.set.commit();
+  report_end(options, log, &summary);
   if (!options.quiet) log << format_summary(summary);
   return summary;
 }
@@ -309,10 +435,10 @@ TrackSummary run_track(const TrackRunOptions& options, std::ostream& log) {
 std::string format_summary(const TrackSummary& s) {
   char text[512];
   std::snprintf(text, sizeof(text),
-                "frames %d (tracked %d, held %d)\n"
+                "frames %d (tracked %d, held %d, lost %d)\n"
                 "mean line time %.3f ms, grouping time %.3f ms, %.1f fps\n"
                 "mean graph vertices %.1f, edges %.1f\n",
-                s.frames, s.tracked, s.held, s.mean_line_ms, s.mean_grouping_ms, s.fps,
+                s.frames, s.tracked, s.held, s.lost, s.mean_line_ms, s.mean_grouping_ms, s.fps,
                 s.mean_vertices, s.mean_edges);
   return text;
 }

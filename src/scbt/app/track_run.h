@@ -1,9 +1,11 @@
 // The body of `scbt track`: read frames, track, write results / CSV / annotated output.
 #pragma once
 
+#include <opencv2/core/types.hpp>
 #include <ostream>
 #include <string>
 
+#include "scbt/app/track_depth.h"
 #include "scbt/tracker/tracker.h"
 
 namespace scbt {
@@ -19,24 +21,31 @@ struct TrackRunOptions {
   std::string input;        // video file, image folder or camera index
   std::string init_file;    // polygon file; its first line is the initial boundary
   std::string init_points;  // or inline "x1,y1 x2,y2 ..."
-  std::string output;       // results file: one polygon line per input frame
-  std::string csv;          // optional per-frame statistics and timings
-  std::string video;        // optional annotated video
-  std::string frames_out;   // optional folder of annotated frames
-  bool quiet = false;       // no progress bar and no summary
-  int max_frames = 0;       // stop after this many frames (0: all)
+  std::string init_box;     // or a box "x,y,w,h": the most salient closed boundary inside it
+  // The first frame tracked, by its 1-based position in the input (1: the first frame read,
+  // whatever number its image file carries). The results hold one line per frame from it on.
+  int start_frame = 1;
+  std::string output;      // results file: one polygon line per input frame
+  std::string csv;         // optional per-frame statistics and timings
+  std::string video;       // optional annotated video
+  std::string frames_out;  // optional folder of annotated frames
+  bool quiet = false;      // no progress bar and no summary
+  int max_frames = 0;      // stop after this many frames (0: all)
   BadFramePolicy on_bad_frame = BadFramePolicy::kHold;
   // Catch SIGINT / SIGTERM while tracking: stop after the current frame and commit the outputs
   // for the frames tracked so far (the previous handlers are restored afterwards).
   bool handle_signals = true;
   TrackerOptions tracker;
+  TrackDepthOptions depth;  // --depth ... --points3d: the boundary in 3-D (track_depth.h)
 };
 
 // One row of the paper's Table I, plus held frames.
 struct TrackSummary {
-  int frames = 0;  // input frames, the initial one included
+  int frames = 0;       // frames from the start frame on, the initial one included
+  int start_frame = 1;  // TrackRunOptions::start_frame
   int tracked = 0;
   int held = 0;
+  int lost = 0;  // tracked frames in state `lost` (counted in `held` too)
   double mean_line_ms = 0.0;
   double mean_grouping_ms = 0.0;
   double fps = 0.0;  // tracked frames per second of tracking time (decoding excluded)
@@ -47,9 +56,12 @@ struct TrackSummary {
   int expected_frames = -1;  // frames the input announced, -1 if unknown
 };
 
-// Resolves the initial polygon from init_file or init_points (exactly one must be set).
-// Throws std::runtime_error / std::invalid_argument with a message naming the source.
+// Resolves the initial polygon from init_file or init_points (exactly one must be set, and no
+// init_box). Throws std::runtime_error / std::invalid_argument with a message naming the source.
 Polygon load_initial_polygon(const TrackRunOptions& options);
+
+// Parses --init-box "x,y,w,h" (integers, w and h positive). Throws std::invalid_argument.
+cv::Rect parse_init_box(const std::string& text);
 
 // Runs the whole job. Progress and the summary go to `log` unless quiet; bad frames and an
 // interruption are reported on `log` as one "scbt: warning: ..." line each even when quiet.

@@ -44,6 +44,11 @@ bool run_live_if_requested(const LiveOptions& live, const TrackRunOptions& track
   if (live.camera >= 0) options.track.input = std::to_string(live.camera);
   options.save_input = live.save_input;
   options.playback_fps = live.playback_fps;
+  if (!track.init_box.empty() || track.start_frame != 1) {
+    throw std::invalid_argument(
+        "--init-box and --start-frame are not available in the interactive "
+        "mode");
+  }
   if (!options.track.frames_out.empty()) {
     throw std::invalid_argument("--frames-out is not available in the interactive mode");
   }

@@ -18,6 +18,44 @@ int report_error(const std::string& message, int exit_code) {
   return exit_code;
 }
 
+namespace {
+
+// --depth and its companions (issue 20, docs/depth.md), in their own group of the help.
+void add_depth_options(CLI::App* command, TrackDepthOptions* depth) {
+  const std::string group = "3-D from an aligned depth image (docs/depth.md)";
+  command
+      ->add_option("--depth", depth->depth,
+                   "DEPTH_INPUT: a folder of 16-bit depth PNGs numbered like INPUT's frames, or a "
+                   "TUM RGB-D folder (rgb.txt, depth.txt; INPUT is then that folder too)")
+      ->group(group);
+  command
+      ->add_option("--intrinsics", depth->intrinsics,
+                   "Pinhole intrinsics of the colour camera: fx,fy,cx,cy (pixels)")
+      ->group(group);
+  command
+      ->add_option("--camera-info", depth->camera_info,
+                   "Or the intrinsics and distortion from a ROS camera_info YAML or an OpenCV "
+                   "calibration file")
+      ->group(group);
+  command
+      ->add_option("--depth-scale", depth->lift.depth_scale,
+                   "Metres per depth unit (TUM RGB-D: 0.0002)")
+      ->capture_default_str()
+      ->group(group);
+  command
+      ->add_option("--points3d", depth->points3d,
+                   "Per-frame CSV: frame,valid,x,y,z,nx,ny,nz,radius,rms,n_valid,n_samples "
+                   "(rim centroid and normal, metres, camera frame; valid 0 while lost or "
+                   "without enough depth). Required with --depth")
+      ->group(group);
+  command
+      ->add_option("--boundary3d", depth->boundary3d,
+                   "Per-frame line \"n x1 y1 z1 ... xn yn zn\" of the rim's 3-D points")
+      ->group(group);
+}
+
+}  // namespace
+
 void add_track_command(CLI::App& app, int* exit_code) {
   auto options = std::make_shared<TrackRunOptions>();
   auto detector = std::make_shared<std::string>("edlines");
@@ -30,11 +68,25 @@ void add_track_command(CLI::App& app, int* exit_code) {
                       "Polygon file whose first line is the initial boundary: n x1 y1 ... xn yn");
   command->add_option("--init-points", options->init_points,
                       "Initial boundary inline: \"x1,y1 x2,y2 ...\"");
-  command->add_option("-o,--output", options->output,
-                      "Results file: one polygon line per input frame (required unless "
-                      "--interactive/--camera)");
-  command->add_option("--csv", options->csv, "Per-frame statistics and timings (CSV)");
-  command->add_option("--video", options->video, "Annotated output video (.avi or .mp4)");
+  command->add_option("--init-box", options->init_box,
+                      "Initial box x,y,w,h (pixels) instead of a polygon: the most salient closed "
+                      "boundary inside it is tracked (not with --init/--init-points)");
+  command
+      ->add_option("--start-frame", options->start_frame,
+                   "Track from frame N, counted from 1 = the first frame of INPUT (whatever "
+                   "number its file name carries); the initial boundary is on frame N and the "
+                   "results hold one line per frame from N; an error if INPUT has fewer frames")
+      ->capture_default_str();
+  command->add_option(
+      "-o,--output", options->output,
+      "Results file: one polygon line per frame from --start-frame on (required unless "
+      "--interactive/--camera)");
+  command->add_option("--csv", options->csv,
+                      "Per-frame CSV: frame, held, state (tracking/uncertain/lost), confidence "
+                      "(0-1), statistics, timings and a note (docs/loss-handling.md)");
+  command->add_option("--video", options->video,
+                      "Annotated output video (.avi or .mp4); the boundary is green while "
+                      "tracking, amber when uncertain, red and labelled when lost");
   command->add_option("--frames-out", options->frames_out, "Folder for annotated frames");
   command->add_option("--max-frames", options->max_frames, "Stop after this many frames (0: all)");
   command
@@ -43,6 +95,7 @@ void add_track_command(CLI::App& app, int* exit_code) {
                    "boundary, go on; exit code 3) or stop (fail)")
       ->check(CLI::IsMember({"hold", "stop"}));
   command->add_flag("-q,--quiet", options->quiet, "No progress bar and no summary");
+  add_depth_options(command, &options->depth);
   add_tracker_options(command, &options->tracker, detector.get());
   auto live = add_live_options(command);
   command

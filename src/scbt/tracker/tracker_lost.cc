@@ -107,7 +107,9 @@ TrackResult Tracker::track_lost(const cv::Mat& frame) {
   pending_matches_ = same_place ? pending_matches_ + 1 : 1;
   pending_ = match;
   if (pending_matches_ < loss.confirm_frames) {
-    // Not yet trusted: still lost, the last confident boundary stays the output.
+    // Not yet trusted: still lost, the last confident boundary stays the output, and with it
+    // no confidence (the match's own is not the output's).
+    result.confidence = 0.0;
     result.boundary = boundary_;
     return result;
   }
