@@ -1,7 +1,8 @@
 // Loss handling on the dataset: per sequence, the confidence's ROC AUC (E_AL >= 10 px positive)
 // on the clean sequence, and the re-acquisition delay and success after two gap variants: 30
 // frames replaced by uniform grey (1 s at 30 fps), and 60 frames dropped (a 2 s jump). The gap
-// starts at the middle of the sequence.
+// starts at the middle of the sequence; gaps and scores are eval/sequence_gap's, as in
+// `scbt eval --gaps` (S@10 after = from the re-acquired frame on).
 //
 //   build/bench/scbt_loss_dataset [--trace clean|grey|jump] DATASET_DIR [SEQUENCE...]
 #include <cmath>
@@ -12,6 +13,7 @@
 #include "scbt/eval/alignment_error.h"
 #include "scbt/eval/dataset.h"
 #include "scbt/eval/roc.h"
+#include "scbt/eval/sequence_gap.h"
 #include "scbt/geometry/polygon_io.h"
 #include "scbt/io/frame_source.h"
 #include "scbt/tracker/tracker.h"
@@ -20,8 +22,6 @@ namespace scbt {
 namespace {
 
 constexpr double kWrongPx = 10.0;
-constexpr int kGreyFrames = 30;
-constexpr int kDroppedFrames = 60;
 
 enum class Variant { kClean, kGrey, kJump };
 
@@ -30,7 +30,7 @@ struct Run {
   int wrong = 0;
   int states[3] = {0, 0, 0};
   double auc = -1.0;
-  double success_10 = 0.0;  // clean: all frames; gaps: frames after the gap
+  double success_10 = 0.0;  // clean: all frames; gaps: frames from re-acquisition on
   int delay = -1;           // frames from the end of the gap to the first right tracked frame
   double ms_mean = 0.0;
   std::vector<double> scores;  // 1 - confidence of every frame outside the gap
@@ -45,14 +45,12 @@ Run run_variant(const DatasetSequence& sequence, Variant variant, bool trace = f
   }
   std::unique_ptr<FrameSource> source = open_frame_source(sequence.frames);
   const int total = std::min<int>(source->frame_count(), truth.size());
-  const int gap_start = total / 2;
-  const int gap_frames = variant == Variant::kGrey ? kGreyFrames : kDroppedFrames;
-  const int gap_end = gap_start + gap_frames;  // first frame index after the gap
+  const SequenceGap gap = variant == Variant::kGrey   ? SequenceGap::grey(total)
+                          : variant == Variant::kJump ? SequenceGap::drop(total)
+                                                      : SequenceGap();
   Tracker tracker;
   Run run;
-  std::vector<double>& scores = run.scores;
-  std::vector<bool>& wrong = run.is_wrong;
-  int after = 0, after_right = 0;
+  std::vector<LossFrame> frames;
   double ms = 0.0;
   cv::Mat frame;
   for (int k = 0; k < total && source->read(&frame); ++k) {
@@ -60,9 +58,9 @@ Run run_variant(const DatasetSequence& sequence, Variant variant, bool trace = f
       tracker.init(frame, truth[0]);
       continue;
     }
-    const bool in_gap = variant != Variant::kClean && k >= gap_start && k < gap_end;
-    if (in_gap && variant == Variant::kJump) continue;
-    if (in_gap) frame.setTo(cv::Scalar::all(128));
+    const bool in_gap = gap.in_gap(k);
+    if (gap.dropped(k)) continue;
+    gap.apply(k, &frame);
     const TrackResult r = tracker.track(frame);
     ms += r.total_ms();
     ++run.frames;
@@ -80,22 +78,20 @@ Run run_variant(const DatasetSequence& sequence, Variant variant, bool trace = f
                    std::sqrt(area(r.boundary)), centroid(truth[k]).x, centroid(truth[k]).y,
                    std::sqrt(area(truth[k])));
     }
+    frames.push_back({k, error, r.confidence, r.state == TrackState::kTracking});
     if (in_gap) continue;
-    const bool is_wrong = !(error < kWrongPx);
-    run.wrong += is_wrong ? 1 : 0;
-    scores.push_back(1.0 - r.confidence);
-    wrong.push_back(is_wrong);
-    if (variant == Variant::kClean || k >= gap_end) {
-      ++after;
-      after_right += is_wrong ? 0 : 1;
-      if (variant != Variant::kClean && run.delay < 0 && !is_wrong &&
-          r.state == TrackState::kTracking) {
-        run.delay = k - gap_end;
-      }
-    }
+    run.scores.push_back(1.0 - r.confidence);
+    run.is_wrong.push_back(!(error < kWrongPx));
   }
-  run.auc = roc_auc(scores, wrong).value_or(-1.0);
-  run.success_10 = after > 0 ? static_cast<double>(after_right) / after : 0.0;
+  const LossScores loss = score_loss(frames, gap, kWrongPx);
+  run.wrong = loss.wrong;
+  run.auc = loss.auc.value_or(-1.0);
+  run.delay = loss.reacquire_delay;
+  if (variant == Variant::kClean) {
+    run.success_10 = loss.scored > 0 ? 1.0 - static_cast<double>(loss.wrong) / loss.scored : 0.0;
+  } else {
+    run.success_10 = loss.success_after.value_or(0.0);
+  }
   run.ms_mean = run.frames > 0 ? ms / run.frames : 0.0;
   return run;
 }
@@ -135,7 +131,8 @@ int main(int argc, char** argv) {
   }
   std::printf(
       "| sequence | frames | E_AL>=10 | AUC | S@10 | tracking/uncertain/lost | ms | grey: delay, "
-      "S@10 after | jump: delay, S@10 after |\n|---|---:|---:|---:|---:|---|---:|---|---|\n");
+      "S@10 after re-acq. | jump: delay, S@10 after re-acq. "
+      "|\n|---|---:|---:|---:|---:|---|---:|---|---|\n");
   std::vector<double> clean_scores, all_scores;
   std::vector<bool> clean_wrong, all_wrong;
   auto pool = [](const Run& run, std::vector<double>* scores, std::vector<bool>* wrong) {

@@ -8,6 +8,7 @@
 
 #include "scbt/eval/perturb.h"
 #include "scbt/eval/report.h"
+#include "scbt/eval/sequence_gap.h"
 #include "scbt/tracker/tracker_options.h"
 
 namespace scbt {
@@ -30,13 +31,28 @@ struct EvalRunOptions {
   // downscaled run are scaled back and scored at full size, and with a frame stride only the
   // frames shown are scored. Results folders (`results`) are scored as they are.
   Perturbation perturbation;
+  // A gap variant of every sequence (eval/sequence_gap.h), starting at its middle: 30 grey frames
+  // or 60 dropped frames. The gap's frames are not scored. Not with a frame stride.
+  GapVariantKind gap = GapVariantKind::kNone;
 
   // Throws std::invalid_argument naming the first bad value (no file system access).
   void check() const;
 };
 
+// The confidence and loss scores of one run tracker on one sequence (or pooled: sequence
+// kAllSequences): ROC AUC of the confidence against E_AL >= 10 px, and with a gap the
+// re-acquisition delay and the success after it.
+struct LossRow {
+  std::string tracker;
+  std::string sequence;
+  std::string variant;          // SequenceGap::name(): clean, grey30, jump60
+  bool has_confidence = false;  // false: the tracker's confidence is always 0 (it has none)
+  LossScores scores;
+};
+
 struct EvalRunSummary {
   std::vector<SequenceScore> scores;  // per (tracker, sequence), then the pooled rows
+  std::vector<LossRow> loss;          // per (run tracker, sequence), then the pooled rows
   std::vector<std::string> files;     // everything written, report first
   std::vector<std::string> warnings;
   double seconds = 0.0;  // wall time of the whole run

@@ -1,6 +1,7 @@
 #include <iostream>
 
 #include "scbt/app/eval_run.h"
+#include "scbt/app/gap_eval_run.h"
 #include "scbt/app/perturbed_eval_run.h"
 #include "scbt/cli/commands.h"
 #include "scbt/eval/dataset.h"
@@ -32,6 +33,7 @@ void add_eval_command(CLI::App& app, int* exit_code) {
   auto no_plot = std::make_shared<bool>(false);
   auto perturb = std::make_shared<std::string>();
   auto perturb_seed = std::make_shared<unsigned long long>(1);
+  auto gaps = std::make_shared<bool>(false);
   CLI::App* command = app.add_subcommand(
       "eval",
       "Run trackers over a dataset laid out like the public one (or score existing results) "
@@ -51,8 +53,9 @@ void add_eval_command(CLI::App& app, int* exit_code) {
                       "Score existing results: NAME=DIR with DIR/<Seq>.txt (one polygon line per "
                       "frame); repeatable. Nothing is run unless --trackers is also given");
   command->add_option("-o,--out", options->out,
-                      "Output folder: <tracker>/<Seq>.txt, report.md, summary.csv, frames.csv, "
-                      "curves.csv, success_curves.png");
+                      "Output folder: <tracker>/<Seq>.txt, report.md (with the confidence's ROC "
+                      "AUC per sequence), summary.csv, frames.csv, curves.csv, loss.csv, "
+                      "success_curves.png");
   command->add_option("-j,--jobs", options->jobs, "Parallel jobs (0: one per core)")
       ->capture_default_str();
   command->add_option("--max-frames", options->max_frames,
@@ -65,11 +68,17 @@ void add_eval_command(CLI::App& app, int* exit_code) {
       "lowlight:B[,SIGMA], jpeg:QUALITY, downscale:FACTOR (docs/robustness-to-camera.md)");
   command->add_option("--perturb-seed", *perturb_seed, "Seed of the perturbations' noise")
       ->capture_default_str();
+  command->add_flag(
+      "--gaps", *gaps,
+      "Also evaluate gap variants of every sequence, from its middle: 30 frames replaced by "
+      "uniform grey, 60 frames dropped (a 2 s jump); into OUT/clean, OUT/grey30, OUT/jump60, plus "
+      "OUT/gaps_summary.md/.csv: confidence ROC AUC, re-acquisition delay, S@10 after it "
+      "(docs/loss-handling.md)");
   command->add_flag("--no-plot", *no_plot, "Do not write success_curves.png");
   command->add_flag("-q,--quiet", options->quiet, "No progress output");
   command->add_flag("--list", *list, "List the trackers and the dataset's sequences, then exit");
   add_tracker_options(command, &options->tracker, detector.get());
-  command->callback([options, detector, list, no_plot, perturb, perturb_seed, exit_code] {
+  command->callback([options, detector, list, no_plot, perturb, perturb_seed, gaps, exit_code] {
     options->tracker.detector.kind = parse_line_detector_kind(*detector);
     if (*list) {
       list_dataset(*options);
@@ -77,6 +86,14 @@ void add_eval_command(CLI::App& app, int* exit_code) {
       return;
     }
     options->plot = !*no_plot;
+    if (*gaps) {
+      if (!perturb->empty())
+        throw std::invalid_argument("--gaps cannot be combined with --perturb");
+      const GapEvalSummary summary = run_gap_evals(*options, std::cerr);
+      if (!options->quiet) std::cout << summary.files.front() << '\n';
+      *exit_code = 0;
+      return;
+    }
     if (!perturb->empty()) {
       const PerturbedEvalSummary summary = run_perturbed_evals(
           *options, parse_perturbation_list(*perturb, *perturb_seed), std::cerr);
