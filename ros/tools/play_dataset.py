@@ -70,6 +70,7 @@ def main():
     events = []
     last_state = {}
     timings = []  # (tracker total ms, latency ms) of every tracked frame
+    tracker_states = []  # (state, confidence) of every tracked frame
 
     def on_boundary(msg):
         with lock:
@@ -83,6 +84,7 @@ def main():
             last_state.update(state)
             if state["event"] == "tracked":
                 timings.append((state["timings_ms"]["total"], state["timings_ms"]["latency"]))
+                tracker_states.append((state["state"], state["confidence"]))
             lock.notify_all()
 
     rospy.Subscriber(args.node + "/boundary", PolygonStamped, on_boundary, queue_size=100000)
@@ -142,6 +144,9 @@ def main():
         state = dict(last_state)
         totals = sorted(t for t, _ in timings)
         latencies = sorted(l for _, l in timings)
+        counts = {s: sum(1 for t, _ in tracker_states if t == s)
+                  for s in ("tracking", "uncertain", "lost")}
+        confidences = sorted(c for _, c in tracker_states)
     print(f"{args.sequence}: sent {len(frames)} frames in {elapsed:.2f} s "
           f"({(len(frames) - 1) / elapsed:.1f} fps), {received} boundaries received, node "
           f"dropped {state.get('dropped_frames')} and missed {state.get('missed_frames')}; "
@@ -153,6 +158,10 @@ def main():
               f"95th percentile {pct(totals, 0.95):.2f} ms; image-to-boundary latency median "
               f"{pct(latencies, 0.5):.2f} ms, 95th percentile {pct(latencies, 0.95):.2f} ms",
               file=sys.stderr)
+        print(f"{args.sequence}: ~state over the tracked frames: "
+              + ", ".join(f"{s} {n}" for s, n in counts.items())
+              + f"; confidence median {pct(confidences, 0.5):.3f}, 5th percentile "
+              f"{pct(confidences, 0.05):.3f}", file=sys.stderr)
     rospy.signal_shutdown("done")
 
 
