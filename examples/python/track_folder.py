@@ -37,7 +37,8 @@ def main(argv):
     for number, path in enumerate(paths[1:], start=2):
         boundary, stats = tracker.track(cv2.imread(str(path)))
         print(format_polygon(boundary))
-        print(f"frame {number}: held {stats.held}, {stats.total_ms:.2f} ms", file=sys.stderr)
+        print(f"frame {number}: {stats.state}, confidence {stats.confidence:.3f}, "
+              f"{stats.total_ms:.2f} ms", file=sys.stderr)
 
 
 if __name__ == "__main__":
