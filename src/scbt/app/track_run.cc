@@ -241,6 +241,15 @@ void check_track_options(const TrackRunOptions& options) {
   options.depth.check();
 }
 
+// The caption of an annotated frame: number, state, confidence, time and the chosen cycle.
+std::string frame_caption(int frame_number, const TrackResult& r) {
+  char status[200];
+  std::snprintf(status, sizeof(status), "frame %d  %s%s  conf %.2f  %.2f ms  cost %.4f  sim %.3f",
+                frame_number, to_string(r.state).c_str(), r.reacquired ? " (re-acquired)" : "",
+                r.confidence, r.total_ms(), r.cost, r.area_similarity);
+  return status;
+}
+
 // The outputs of a run, all opened before the first frame (a folder, a missing folder or a video
 // name without a container fails here); none replaces an old file before commit().
 struct TrackOutputs {
@@ -264,15 +273,62 @@ struct TrackOutputs {
     if (video) video->write(image);
     if (frames_out) frames_out->write(frame_number, image);
   }
+  // The initial frame: its line, 3-D row and image (no CSV row: nothing was tracked).
+  void write_initial(int number, const Polygon& initial, const cv::Mat& frame) {
+    TrackResult first;
+    first.boundary = initial;
+    first.confidence = 1.0;
+    results->stream() << format_polygon_line(initial) << '\n';
+    if (depth) depth->write(number, &first, frame.size());
+    if (annotate()) {
+      annotation(annotate_frame(frame, {}, first,
+                                "frame " + std::to_string(number) + ": initial boundary"),
+                 number);
+    }
+    set.end_record();
+  }
+  // A frame's line, CSV row, 3-D row and image. `debug` is null for a bad frame, which the
+  // tracker did not see: no 3-D and no image then.
+  void write_frame(int number, const TrackResult& r, const cv::Mat& frame, const std::string& note,
+                   const TrackDebug* debug) {
+    results->stream() << format_polygon_line(r.boundary) << '\n';
+    if (csv) write_csv_row(csv->stream(), number, r, note);
+    if (depth) depth->write(number, debug ? &r : nullptr, frame.size());
+    if (annotate() && debug) {
+      annotation(annotate_frame(frame, *debug, r, frame_caption(number, r)), number);
+    }
+    set.end_record();
+  }
 };
 
-// The caption of an annotated frame: number, state, confidence, time and the chosen cycle.
-std::string frame_caption(int frame_number, const TrackResult& r) {
-  char status[200];
-  std::snprintf(status, sizeof(status), "frame %d  %s%s  conf %.2f  %.2f ms  cost %.4f  sim %.3f",
-                frame_number, to_string(r.state).c_str(), r.reacquired ? " (re-acquired)" : "",
-                r.confidence, r.total_ms(), r.cost, r.area_similarity);
-  return status;
+// No output may overwrite an input or another output: checked before anything is read or written.
+void check_paths(const TrackRunOptions& options) {
+  std::vector<NamedPath> inputs = {{"INPUT", options.input}};
+  if (!options.init_file.empty()) inputs.push_back({"--init", options.init_file});
+  std::vector<NamedPath> outputs = {{"-o", options.output}};
+  if (!options.csv.empty()) outputs.push_back({"--csv", options.csv});
+  if (!options.video.empty()) outputs.push_back({"--video", options.video});
+  std::vector<NamedPath> output_folders;
+  if (!options.frames_out.empty()) output_folders.push_back({"--frames-out", options.frames_out});
+  add_depth_paths(options.depth, &inputs, &outputs);
+  check_no_overwrite(inputs, outputs, output_folders);
+}
+
+// A bad frame under the hold policy: reported, and the boundary held. The tracker did not see
+// it: no confidence, and a lost object stays lost.
+TrackResult held_bad_frame(const std::string& bad, int number, const Tracker& tracker,
+                           TrackState last_state, const TrackRunOptions& options,
+                           std::ostream& log) {
+  if (options.on_bad_frame == BadFramePolicy::kStop) {
+    throw std::runtime_error(bad + " (frame " + std::to_string(number) + "; --on-bad-frame=stop)");
+  }
+  if (!options.quiet) log << '\n';
+  log << "scbt: warning: " << printable(bad) << " (frame " << number << "); boundary held\n";
+  TrackResult r;
+  r.boundary = tracker.boundary();
+  r.held = true;
+  r.state = last_state == TrackState::kLost ? TrackState::kLost : TrackState::kUncertain;
+  return r;
 }
 
 void add_to_summary(const TrackResult& r, TrackSummary* summary, double* total_ms) {
@@ -331,17 +387,7 @@ void report_end(const TrackRunOptions& options, std::ostream& log, TrackSummary*
 
 TrackSummary run_track(const TrackRunOptions& options, std::ostream& log) {
   check_track_options(options);
-  // Before anything is read or written: no output may overwrite an input or another output.
-  std::vector<NamedPath> inputs = {{"INPUT", options.input}};
-  if (!options.init_file.empty()) inputs.push_back({"--init", options.init_file});
-  std::vector<NamedPath> outputs = {{"-o", options.output}};
-  if (!options.csv.empty()) outputs.push_back({"--csv", options.csv});
-  if (!options.video.empty()) outputs.push_back({"--video", options.video});
-  std::vector<NamedPath> output_folders;
-  if (!options.frames_out.empty()) output_folders.push_back({"--frames-out", options.frames_out});
-  add_depth_paths(options.depth, &inputs, &outputs);
-  check_no_overwrite(inputs, outputs, output_folders);
-
+  check_paths(options);
   const Polygon polygon = options.init_box.empty() ? load_initial_polygon(options) : Polygon{};
   Tracker tracker(options.tracker);
   const StopSignalScope signal_scope(options.handle_signals);
@@ -352,14 +398,8 @@ TrackSummary run_track(const TrackRunOptions& options, std::ostream& log) {
   read_start_frame(source.get(), options, &frame);
   const Polygon initial = initialise(&tracker, frame, polygon, options, source->current_name());
   tracker.set_keep_debug(out.annotate());
-
   if (out.csv) write_csv_header(out.csv->stream());
-  out.results->stream() << format_polygon_line(initial) << '\n';
-  TrackResult first;
-  first.boundary = initial;
-  first.confidence = 1.0;
-  if (out.depth) out.depth->write(options.start_frame, &first, frame.size());
-  out.set.end_record();
+  out.write_initial(options.start_frame, initial, frame);
   TrackSummary summary;
   summary.frames = 1;
   summary.start_frame = options.start_frame;
@@ -368,12 +408,6 @@ TrackSummary run_track(const TrackRunOptions& options, std::ostream& log) {
   }
   double total_ms = 0.0;
   ProgressBar progress(log, "tracking", summary.expected_frames, !options.quiet);
-  if (out.annotate()) {
-    out.annotation(
-        annotate_frame(frame, {}, first,
-                       "frame " + std::to_string(options.start_frame) + ": initial boundary"),
-        options.start_frame);
-  }
   TrackState last_state = TrackState::kTracking;
   while (options.max_frames <= 0 || summary.frames < options.max_frames) {
     if (g_stop_signal != 0 || out.set.reader_gone()) break;
@@ -392,34 +426,14 @@ TrackSummary run_track(const TrackRunOptions& options, std::ostream& log) {
     ++summary.frames;
     const int number = options.start_frame + summary.frames - 1;  // in the input, 1-based
     if (!bad.empty()) {
-      if (options.on_bad_frame == BadFramePolicy::kStop) {
-        throw std::runtime_error(bad + " (frame " + std::to_string(number) +
-                                 "; --on-bad-frame=stop)");
-      }
+      r = held_bad_frame(bad, number, tracker, last_state, options, log);
       ++summary.bad_frames;
-      if (!options.quiet) log << '\n';
-      log << "scbt: warning: " << printable(bad) << " (frame " << number << "); boundary held\n";
-      // The tracker did not see the frame: no confidence; lost stays lost.
-      r = TrackResult();
-      r.boundary = tracker.boundary();
-      r.held = true;
-      r.state = last_state == TrackState::kLost ? TrackState::kLost : TrackState::kUncertain;
-      out.results->stream() << format_polygon_line(r.boundary) << '\n';
-      if (out.csv) write_csv_row(out.csv->stream(), number, r, "bad frame: " + bad);
-      if (out.depth) out.depth->write(number, nullptr, frame.size());
-      out.set.end_record();
-      progress.update(summary.frames);
-      continue;
+      out.write_frame(number, r, frame, "bad frame: " + bad, nullptr);
+    } else {
+      last_state = r.state;
+      add_to_summary(r, &summary, &total_ms);
+      out.write_frame(number, r, frame, frame_note(r, frame.size()), &tracker.debug());
     }
-    last_state = r.state;
-    add_to_summary(r, &summary, &total_ms);
-    out.results->stream() << format_polygon_line(r.boundary) << '\n';
-    if (out.csv) write_csv_row(out.csv->stream(), number, r, frame_note(r, frame.size()));
-    if (out.depth) out.depth->write(number, &r, frame.size());
-    if (out.annotate()) {
-      out.annotation(annotate_frame(frame, tracker.debug(), r, frame_caption(number, r)), number);
-    }
-    out.set.end_record();
     progress.update(summary.frames);
   }
   progress.finish(summary.frames);
