@@ -113,9 +113,13 @@ int main(int argc, char** argv) {
   app.add_option("--cost-tolerance", options.cost_tolerance);
   app.add_option("--recover-by-motion", options.recover_by_motion);
   app.add_option("--predict-motion", options.predict_motion);
+  app.add_option("--confirm-motion", options.confirm_motion);
+  app.add_option("--min-motion-agreement", options.min_motion_agreement);
   app.add_option("--adaptive-thresholds", options.adaptive_thresholds.enabled);
   app.add_option("--boundary-fraction", options.adaptive_thresholds.boundary_fraction);
   app.add_option("--noise-deviations", options.adaptive_thresholds.noise_deviations);
+  app.add_option("--smooth-noise", options.adaptive_thresholds.smooth_noise);
+  app.add_option("--smoothed-noise", options.adaptive_thresholds.smoothed_noise);
   CLI11_PARSE(app, argc, argv);
   try {
     options.check();

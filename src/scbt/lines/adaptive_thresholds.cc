@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <opencv2/imgproc.hpp>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -32,6 +33,9 @@ void AdaptiveThresholdOptions::check() const {
     throw std::invalid_argument("adaptive threshold noise_deviations must be >= 0");
   }
   if (boundary_samples < 3) throw std::invalid_argument("boundary_samples must be >= 3");
+  if (!(smoothed_noise > 0.0 && smoothed_noise <= 100.0)) {
+    throw std::invalid_argument("adaptive threshold smoothed_noise must be in (0, 100]");
+  }
   if (!(search_reach >= 1.0 && search_reach <= 50.0)) {
     throw std::invalid_argument("adaptive threshold search_reach must be in 1..50 px");
   }
@@ -128,16 +132,40 @@ double boundary_edge_strength(const cv::Mat& gray, cv::Point offset, const Polyg
 EdgeThresholds adapt_edge_thresholds(const cv::Mat& gray, cv::Point offset, const Polygon& boundary,
                                      int gradient, int anchor,
                                      const AdaptiveThresholdOptions& options) {
+  AdaptiveThresholdOptions without_smoothing = options;
+  without_smoothing.smooth_noise = false;
   EdgeThresholds t;
+  adapt_to_frame(gray, offset, boundary, gradient, anchor, without_smoothing, nullptr, &t);
+  return t;
+}
+
+const cv::Mat& adapt_to_frame(const cv::Mat& gray, cv::Point offset, const Polygon& boundary,
+                              int gradient, int anchor, const AdaptiveThresholdOptions& options,
+                              cv::Mat* smoothed, EdgeThresholds* thresholds) {
+  EdgeThresholds& t = *thresholds;
+  t = EdgeThresholds();
   t.gradient = gradient;
   t.anchor = anchor;
-  if (!options.enabled) return t;
+  if (!options.enabled) return gray;
   t.noise_sigma = estimate_noise_sigma(gray);
-  t.boundary_gradient = boundary_edge_strength(gray, offset, boundary, options.boundary_samples,
+  const cv::Mat* image = &gray;
+  // White noise smoothed by a Gaussian of sigma s keeps sigma_n / (2 sqrt(pi) s) of its deviation.
+  const double smoothing = t.noise_sigma / (2.0 * std::sqrt(CV_PI) * options.smoothed_noise);
+  // Below 0.5 px a Gaussian hardly smooths: EDLines' own suffices.
+  if (options.smooth_noise && smoothed != nullptr && smoothing >= 0.5) {
+    t.pre_smoothing = std::min(smoothing, 4.0);
+    cv::GaussianBlur(gray, *smoothed, cv::Size(), t.pre_smoothing, t.pre_smoothing,
+                     cv::BORDER_REFLECT_101 | cv::BORDER_ISOLATED);
+    image = smoothed;
+  }
+  t.boundary_gradient = boundary_edge_strength(*image, offset, boundary, options.boundary_samples,
                                                options.search_reach);
   // |gx| + |gy| of pure noise: each term has deviation sigma * gain; their sum about sqrt(2)x.
-  const double noise_floor =
-      options.noise_deviations * std::sqrt(2.0) * edlines_gradient_noise_gain() * t.noise_sigma;
+  // A derivative of white noise smoothed to sigma keeps 1/sigma^2 of it: pre-smoothing on top of
+  // EDLines' sigma 1 leaves 1 / (1 + s^2).
+  const double noise_floor = options.noise_deviations * std::sqrt(2.0) *
+                             edlines_gradient_noise_gain() * t.noise_sigma /
+                             (1.0 + t.pre_smoothing * t.pre_smoothing);
   // Raising the threshold above the published one for noise loses more of the boundary than it
   // removes noise edges (which the a-contrario validation rejects anyway): noise only limits
   // how far it is lowered.
@@ -148,7 +176,7 @@ EdgeThresholds adapt_edge_thresholds(const cv::Mat& gray, cv::Point offset, cons
   }
   t.gradient = std::max(1, static_cast<int>(std::lround(threshold)));
   t.anchor = std::max(1, static_cast<int>(std::lround(anchor * threshold / gradient)));
-  return t;
+  return *image;
 }
 
 }  // namespace scbt

@@ -21,6 +21,12 @@ struct AdaptiveThresholdOptions {
   double noise_deviations = 3.0;
   int boundary_samples = 48;  // points along the boundary where its edge strength is read
   double search_reach = 6.0;  // px on either side of the boundary searched for its edge
+  // Noise-dependent smoothing: when the estimated noise is more than EDLines' own smoothing
+  // (sigma 1) was made for, the window is first smoothed with the Gaussian that leaves about
+  // `smoothed_noise` grey levels of white noise (sigma_n / (2 sqrt(pi) s)), so that edge walks
+  // follow the boundary instead of noise ridges.
+  bool smooth_noise = false;
+  double smoothed_noise = 2.0;
 
   // Throws std::invalid_argument naming the first bad value.
   void check() const;
@@ -31,6 +37,7 @@ struct EdgeThresholds {
   int anchor = 8;
   double noise_sigma = 0.0;        // estimated noise of the grey image (grey levels)
   double boundary_gradient = 0.0;  // the boundary's median edge strength, EDLines' units
+  double pre_smoothing = 0.0;      // sigma of the smoothing applied before detection (0: none)
 };
 
 // Immerkær's fast noise estimate (1996): the mean absolute response of the Laplacian difference
@@ -48,6 +55,12 @@ double boundary_edge_strength(const cv::Mat& gray, cv::Point offset, const Polyg
 EdgeThresholds adapt_edge_thresholds(const cv::Mat& gray, cv::Point offset, const Polygon& boundary,
                                      int gradient, int anchor,
                                      const AdaptiveThresholdOptions& options);
+
+// The same, first smoothing `gray` into *smoothed when options.smooth_noise and the noise call
+// for it. Returns the image to detect on: *smoothed, or gray.
+const cv::Mat& adapt_to_frame(const cv::Mat& gray, cv::Point offset, const Polygon& boundary,
+                              int gradient, int anchor, const AdaptiveThresholdOptions& options,
+                              cv::Mat* smoothed, EdgeThresholds* thresholds);
 
 // Standard deviation of EDLines' |gx| (Sobel after its 5x5 Gaussian) for unit white noise.
 double edlines_gradient_noise_gain();

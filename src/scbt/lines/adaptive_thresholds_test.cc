@@ -80,6 +80,28 @@ TEST(AdaptiveThresholds, LowersThemForADimOrBlurredBoundaryButNotBelowNoise) {
   EXPECT_EQ(fixed.anchor, 8);
 }
 
+TEST(AdaptiveThresholds, SmoothsANoisyWindowOnly) {
+  AdaptiveThresholdOptions options;
+  options.enabled = true;
+  options.smooth_noise = true;
+  cv::Mat smoothed;
+  EdgeThresholds t;
+  const cv::Mat clean = scene(80, 0, 1);
+  const cv::Mat& clean_out = adapt_to_frame(clean, {0, 0}, kSquare, 36, 8, options, &smoothed, &t);
+  EXPECT_EQ(clean_out.data, clean.data);  // nothing to smooth: the input itself
+  EXPECT_EQ(t.pre_smoothing, 0.0);
+  const cv::Mat noisy = scene(80, 0, 15);
+  const cv::Mat& noisy_out = adapt_to_frame(noisy, {0, 0}, kSquare, 36, 8, options, &smoothed, &t);
+  EXPECT_EQ(noisy_out.data, smoothed.data);
+  // sigma_n / (2 sqrt(pi) 2) for sigma_n about 15: about 2.1 px.
+  EXPECT_NEAR(t.pre_smoothing, 15.0 / (4.0 * std::sqrt(CV_PI)), 0.4);
+  EXPECT_LT(estimate_noise_sigma(noisy_out), 0.35 * t.noise_sigma);
+  // The boundary's strength is read on the smoothed window: still well above the noise floor.
+  EXPECT_GT(t.boundary_gradient, 2.0 * t.gradient);
+  options.smoothed_noise = 0;
+  EXPECT_THROW(options.check(), std::invalid_argument);
+}
+
 TEST(AdaptiveThresholds, RejectsBadOptions) {
   AdaptiveThresholdOptions o;
   o.boundary_fraction = 0;

@@ -58,7 +58,7 @@ Tracker::Tracker(const TrackerOptions& options)
 
 Tracker::Tracker(const TrackerOptions& options,
                  const std::function<std::unique_ptr<CycleStage>()>& make_cycle_stage)
-    : options_(options), monitor_(options.loss) {
+    : options_(options), appearance_(options.appearance), monitor_(options.loss) {
   options_.check();
   detector_ = make_line_detector(options_.detector);
   for (Attempt& a : attempts_) a.cycles = make_cycle_stage();
@@ -89,6 +89,7 @@ void Tracker::init(const cv::Mat& frame, const Polygon& polygon) {
   frame_size_ = frame.size();
   motion_.reset();
   motion_.update(boundary_);
+  appearance_.remember(frame, boundary_);
   monitor_.reset(polygon, sample_edges(polygon, reference_gray_, {0, 0}, 0.0).inside_level);
   pending_.clear();
   pending_matches_ = 0;
@@ -108,19 +109,20 @@ void Tracker::attempt(const cv::Mat& frame, const Polygon& prior, Attempt* a,
     if (a->roi.empty()) a->roi = cv::Rect(cv::Point(0, 0), frame_size_);
   }
   to_gray(frame(a->roi), &gray_);
+  const cv::Mat* detect_on = &gray_;
   if (options_.adaptive_thresholds.enabled && detector_->adapts_thresholds()) {
-    const EdgeThresholds t =
-        adapt_edge_thresholds(gray_, a->roi.tl(), prior, options_.detector.gradient_threshold,
-                              options_.detector.anchor_threshold, options_.adaptive_thresholds);
-    detector_->set_edge_thresholds(t.gradient, t.anchor);
-    a->thresholds = t;
+    // Thresholds (and, for a noisy window, a smoothed copy to detect on) suited to this window.
+    detect_on = &adapt_to_frame(gray_, a->roi.tl(), prior, options_.detector.gradient_threshold,
+                                options_.detector.anchor_threshold, options_.adaptive_thresholds,
+                                &smoothed_gray_, &a->thresholds);
+    detector_->set_edge_thresholds(a->thresholds.gradient, a->thresholds.anchor);
   }
   if (options_.detector.crop_to_boundary) {
     // Detectors that can (edlines) look only at the band around the prior boundary.
-    a->detected = detector_->detect_near(gray_, a->roi.tl(), frame_size_, prior,
+    a->detected = detector_->detect_near(*detect_on, a->roi.tl(), frame_size_, prior,
                                          options_.filter_distance + options_.detector.roi_padding);
   } else {
-    a->detected = detector_->detect_in(gray_, a->roi.tl(), frame_size_);
+    a->detected = detector_->detect_in(*detect_on, a->roi.tl(), frame_size_);
   }
   a->line_ms = elapsed_ms(line_start);
 
@@ -156,6 +158,12 @@ void Tracker::attempt(const cv::Mat& frame, const Polygon& prior, Attempt* a,
       a->stages.filter_ms + a->stages.graph_ms + a->stages.search_ms + a->stages.choice_ms;
 }
 
+bool Tracker::confirmed(const cv::Mat& frame, const Polygon& moved, const Polygon& unmoved) {
+  const double agreement = appearance_.agreement(frame, moved);
+  return agreement >= options_.min_motion_agreement &&
+         agreement > appearance_.agreement(frame, unmoved);
+}
+
 TrackResult Tracker::track(const cv::Mat& frame) {
   if (!initialized()) throw std::logic_error("Tracker::track called before init");
   if (frame.empty()) to_gray(frame, &gray_);  // throws
@@ -169,6 +177,10 @@ TrackResult Tracker::track(const cv::Mat& frame) {
   Attempt* a = &attempts_[0];
   if (options_.predict_motion) {
     motion_.predict(boundary_, /*with_scale=*/false, &predicted_);
+    if (options_.confirm_motion && predicted_ != boundary_ &&
+        !confirmed(frame, predicted_, boundary_)) {
+      predicted_ = boundary_;
+    }
   } else {
     predicted_ = boundary_;
   }
@@ -179,14 +191,18 @@ TrackResult Tracker::track(const cv::Mat& frame) {
 
   // No candidate within the area gate of the last boundary: at a low frame rate an object
   // approaching or receding fast grows or shrinks by more than the gate between frames. Search
-  // again with the size its recent growth predicts.
+  // again with the size its recent growth predicts (if the image confirms that size: a growth
+  // measured on a mis-tracked frame would otherwise compound).
   if (!a->choice && options_.predict_motion &&
       !(area_similarity(motion_.predicted_area_ratio(), 1.0) > options_.min_area_similarity)) {
-    motion_.predict(boundary_, /*with_scale=*/true, &predicted_);
-    Attempt* retry = &attempts_[1];
-    attempt(frame, predicted_, retry, options_.min_area_similarity);
-    add_retry_times(*retry, &result);
-    if (retry->choice) a = retry;
+    Polygon scaled;
+    motion_.predict(boundary_, /*with_scale=*/true, &scaled);
+    if (!options_.confirm_motion || confirmed(frame, scaled, predicted_)) {
+      Attempt* retry = &attempts_[1];
+      attempt(frame, scaled, retry, options_.min_area_similarity);
+      add_retry_times(*retry, &result);
+      if (retry->choice) a = retry;
+    }
   }
 
   // Lost: the boundary may have moved out of the search band (fast motion, camera swing).
@@ -235,6 +251,7 @@ TrackResult Tracker::track(const cv::Mat& frame) {
       }
     }
     motion_.update(boundary_);
+    if (options_.predict_motion && options_.confirm_motion) appearance_.remember(frame, boundary_);
   } else {
     result.held = true;
     motion_.update_held();

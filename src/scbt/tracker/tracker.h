@@ -9,6 +9,7 @@
 #include "scbt/choice/boundary_choice.h"
 #include "scbt/geometry/polygon.h"
 #include "scbt/graph/segment_graph.h"
+#include "scbt/tracker/contrast_profile.h"
 #include "scbt/tracker/cycle_stage.h"
 #include "scbt/tracker/motion_model.h"
 #include "scbt/tracker/reacquire.h"
@@ -94,12 +95,14 @@ class Tracker {
   double boundary_area_ = 0.0;
   cv::Size frame_size_;
   cv::Mat gray_;
+  cv::Mat smoothed_gray_;  // gray_ smoothed for a noisy frame (AdaptiveThresholdOptions)
   // The grey window around the boundary the last time it was tracked, for re-finding it by
   // image motion when it is lost (TrackerOptions::recover_by_motion).
   cv::Mat reference_gray_;
   cv::Rect reference_roi_;
   MotionModel motion_;  // predicts where the boundary goes next (TrackerOptions::predict_motion)
   Polygon predicted_;   // where this frame's search looks (reused buffer)
+  BoundaryAppearance appearance_;  // confirms predictions (TrackerOptions::confirm_motion)
 
   // One pass of the per-frame pipeline searching around `prior`. Two are kept (the first try
   // and a recovery search) and reused frame to frame, so that steady-state tracking allocates
@@ -119,6 +122,9 @@ class Tracker {
     StageTimes stages;
   };
   void attempt(const cv::Mat& frame, const Polygon& prior, Attempt* a, double min_similarity);
+  // Whether `moved` (a predicted placement of the boundary) agrees with its appearance better
+  // than `unmoved` does, and at least by TrackerOptions::min_motion_agreement.
+  bool confirmed(const cv::Mat& frame, const Polygon& moved, const Polygon& unmoved);
   static void add_retry_times(const Attempt& retry, TrackResult* result);
   // The evidence (confidence.h) of `chosen`, the cycle attempt `a` chose around `previous`; the
   // grey window gray_ must still be a's (tracker_lost.cc).

@@ -10,6 +10,7 @@ void TrackerOptions::check() const {
   detector.check();
   adaptive_thresholds.check();
   loss.check();
+  appearance.check();
   if (!(filter_distance > 0.0 && filter_distance <= 1000.0)) {
     throw std::invalid_argument("filter_distance must be in (0, 1000] pixels, got " +
                                 std::to_string(filter_distance));
@@ -21,6 +22,10 @@ void TrackerOptions::check() const {
   if (!(cost_tolerance >= 0.0 && cost_tolerance <= 10.0)) {
     throw std::invalid_argument("cost_tolerance must be in [0, 10], got " +
                                 std::to_string(cost_tolerance));
+  }
+  if (!(min_motion_agreement >= -1.0 && min_motion_agreement <= 1.0)) {
+    throw std::invalid_argument("min_motion_agreement must be in [-1, 1], got " +
+                                std::to_string(min_motion_agreement));
   }
   if (max_segments < 3 || max_segments > 100000) {
     throw std::invalid_argument("max_segments must be in 3..100000, got " +

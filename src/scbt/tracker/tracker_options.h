@@ -5,6 +5,7 @@
 #include "scbt/lines/adaptive_thresholds.h"
 #include "scbt/lines/line_detector.h"
 #include "scbt/tracker/confidence.h"
+#include "scbt/tracker/contrast_profile.h"
 #include "scbt/tracker/track_state.h"
 
 namespace scbt {
@@ -26,6 +27,13 @@ struct TrackerOptions {
   // Search around where the boundary's recent motion (constant velocity) predicts it, rather than
   // where it was in the last frame.
   bool predict_motion = false;
+  // ... but only where the image confirms it: the predicted placement's contrast profile
+  // (contrast_profile.h) must agree with the last tracked boundary's better than the unmoved
+  // placement's does. A velocity from a mis-tracked frame (noise, low light) then does not carry
+  // the search off.
+  bool confirm_motion = true;
+  double min_motion_agreement = 0.0;  // ... and the predicted placement's own agreement (cosine)
+  ContrastProfileOptions appearance;
   // Per-frame EDLines thresholds from the boundary's contrast and the image noise (edlines only).
   AdaptiveThresholdOptions adaptive_thresholds;
   BdspOptions bdsp;
