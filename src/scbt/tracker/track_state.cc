@@ -27,6 +27,10 @@ void LossOptions::check() const {
     throw std::invalid_argument("miss_confidence must be in [0, tracking_confidence], got " +
                                 std::to_string(miss_confidence));
   }
+  if (unsure_to_lost < 1 || unsure_to_lost > 1000) {
+    throw std::invalid_argument("unsure_to_lost must be in 1..1000, got " +
+                                std::to_string(unsure_to_lost));
+  }
   if (misses_to_lost < 1 || misses_to_lost > 1000) {
     throw std::invalid_argument("misses_to_lost must be in 1..1000, got " +
                                 std::to_string(misses_to_lost));
@@ -76,6 +80,7 @@ void LossMonitor::reset(const Polygon& boundary, double inside_level) {
   set_confident(boundary, inside_level);
   state_ = TrackState::kTracking;
   misses_ = 0;
+  unsure_ = 0;
 }
 
 bool LossMonitor::matches(const Polygon& cycle, const BoundaryEvidence& evidence,
@@ -90,9 +95,12 @@ bool LossMonitor::matches(const Polygon& cycle, const BoundaryEvidence& evidence
 
 TrackState LossMonitor::update(const Polygon& boundary, double confidence, bool held,
                                const BoundaryEvidence& evidence) {
-  if (held || confidence < options_.miss_confidence) {
-    ++misses_;
-    const bool lost = options_.enabled && misses_ >= options_.misses_to_lost;
+  const bool miss = held || confidence < options_.miss_confidence;
+  unsure_ = confidence >= options_.tracking_confidence ? 0 : unsure_ + 1;
+  if (miss || unsure_ >= options_.unsure_to_lost) {
+    misses_ += miss ? 1 : 0;
+    const bool lost = options_.enabled &&
+                      (misses_ >= options_.misses_to_lost || unsure_ >= options_.unsure_to_lost);
     if (lost && state_ != TrackState::kLost && history_size_ > 0) {
       const Confident& oldest = history_[(history_next_ + kHistory - history_size_) % kHistory];
       last_confident_ = oldest.boundary;

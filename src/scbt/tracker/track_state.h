@@ -32,6 +32,10 @@ struct LossOptions {
   double miss_confidence = 0.2;
   // This many misses in a row: `lost`. The output goes back to the last confident boundary.
   int misses_to_lost = 3;
+  // ... or this many frames in a row without a `tracking` one (misses and low-confidence
+  // boundaries): after a jump the search band can hold a wrong cycle good enough not to be a
+  // miss, and following it lets its shape become the reference.
+  int unsure_to_lost = 5;
   // While lost, a closed cycle is taken as the object found again when its shape_distance to the
   // last confident boundary is at most this (an ellipse of aspect 1.1 against a circle: 0.024)
   // and its confidence at least reacquire_confidence: a search over the whole frame tests many
@@ -91,6 +95,7 @@ class LossMonitor {
   LossOptions options_;
   TrackState state_ = TrackState::kTracking;
   int misses_ = 0;
+  int unsure_ = 0;  // frames in a row that were not `tracking`
   Polygon last_confident_;
   ShapeDescriptor reference_;
   double reference_level_ = -1.0;

@@ -257,8 +257,9 @@ TrackResult Tracker::track(const cv::Mat& frame) {
     motion_.update_held();
   }
   result.state = monitor_.update(boundary_, result.confidence, result.held, result.evidence);
-  if (result.state == TrackState::kLost) {
-    // No confident output while lost: back to the newest confident boundary.
+  if (result.state == TrackState::kLost && !result.held) {
+    // Lost on a boundary found but not trusted: back to the newest confident one. Lost on a held
+    // frame, the held boundary stays (the last found, nearest to where the object went).
     boundary_ = monitor_.latest_confident();
     boundary_area_ = area(boundary_);
   }

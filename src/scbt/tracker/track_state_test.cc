@@ -1,0 +1,103 @@
+// LossMonitor's state machine: misses and low-confidence streaks lead to `lost`, a confident frame
+// resets them, and the boundaries it keeps for the output and the search.
+#include "scbt/tracker/track_state.h"
+
+#include <gtest/gtest.h>
+
+#include <stdexcept>
+
+namespace scbt {
+namespace {
+
+Polygon square(double x, double size = 40.0) {
+  return {{x, 0.0}, {x + size, 0.0}, {x + size, size}, {x, size}};
+}
+
+BoundaryEvidence level(double inside) {
+  BoundaryEvidence e;
+  e.inside_level = inside;
+  return e;
+}
+
+TEST(LossMonitor, ThreeMissesInARowAreLost) {
+  LossMonitor monitor;
+  monitor.reset(square(0), 100);
+  EXPECT_EQ(monitor.update(square(1), 0.9, false, level(100)), TrackState::kTracking);
+  EXPECT_EQ(monitor.update(square(1), 0.0, true, {}), TrackState::kUncertain);
+  EXPECT_EQ(monitor.update(square(1), 0.1, false, {}), TrackState::kUncertain);  // below 0.2
+  // A confident frame in between starts the count again.
+  EXPECT_EQ(monitor.update(square(2), 0.9, false, level(100)), TrackState::kTracking);
+  EXPECT_EQ(monitor.update(square(2), 0.0, true, {}), TrackState::kUncertain);
+  EXPECT_EQ(monitor.update(square(2), 0.0, true, {}), TrackState::kUncertain);
+  EXPECT_EQ(monitor.update(square(2), 0.0, true, {}), TrackState::kLost);
+}
+
+TEST(LossMonitor, AStreakOfLowConfidenceIsLost) {
+  LossMonitor monitor;
+  monitor.reset(square(0), 100);
+  // 0.3: not a miss (>= 0.2) and not tracking (< 0.5); five in a row are lost.
+  for (int k = 0; k < 4; ++k) {
+    EXPECT_EQ(monitor.update(square(k), 0.3, false, level(100)), TrackState::kUncertain) << k;
+  }
+  EXPECT_EQ(monitor.update(square(4), 0.3, false, level(100)), TrackState::kLost);
+  // The low-confidence boundaries never became the reference.
+  EXPECT_EQ(monitor.last_confident(), square(0));
+}
+
+TEST(LossMonitor, MixedMissesAndLowConfidenceCountTogether) {
+  LossOptions options;
+  options.misses_to_lost = 3;
+  options.unsure_to_lost = 4;
+  LossMonitor monitor(options);
+  monitor.reset(square(0), 100);
+  EXPECT_EQ(monitor.update(square(0), 0.0, true, {}), TrackState::kUncertain);
+  EXPECT_EQ(monitor.update(square(0), 0.3, false, {}), TrackState::kUncertain);
+  EXPECT_EQ(monitor.update(square(0), 0.0, true, {}), TrackState::kUncertain);
+  EXPECT_EQ(monitor.update(square(0), 0.3, false, {}), TrackState::kLost);
+}
+
+TEST(LossMonitor, DisabledNeverLost) {
+  LossOptions options;
+  options.enabled = false;
+  LossMonitor monitor(options);
+  monitor.reset(square(0), 100);
+  for (int k = 0; k < 10; ++k) {
+    EXPECT_EQ(monitor.update(square(0), k % 2 ? 0.0 : 0.3, k % 2 == 1, {}), TrackState::kUncertain);
+  }
+}
+
+TEST(LossMonitor, OutputIsTheNewestConfidentAndTheSearchTheOldest) {
+  LossMonitor monitor;
+  monitor.reset(square(0), 100);
+  for (int k = 1; k <= 6; ++k) monitor.update(square(k), 0.95, false, level(100));
+  for (int k = 0; k < 3; ++k) monitor.update(square(6), 0.0, true, {});
+  ASSERT_EQ(monitor.state(), TrackState::kLost);
+  EXPECT_EQ(monitor.latest_confident(), square(6));
+  EXPECT_EQ(monitor.last_confident(), square(3));  // 4 confident frames back
+}
+
+TEST(LossMonitor, MatchNeedsTheReacquireConfidenceShapeAndLevel) {
+  LossMonitor monitor;
+  monitor.reset(square(0), 100);
+  EXPECT_TRUE(monitor.matches(square(200, 60), level(110), 0.95));
+  EXPECT_FALSE(monitor.matches(square(200, 60), level(110), 0.8));   // below 0.9
+  EXPECT_FALSE(monitor.matches(square(200, 60), level(150), 0.95));  // level moved by 50
+  const Polygon thin = {{0, 0}, {120, 0}, {120, 20}, {0, 20}};
+  EXPECT_FALSE(monitor.matches(thin, level(100), 0.95));
+}
+
+TEST(LossOptions, CheckRejectsBadValues) {
+  EXPECT_NO_THROW(LossOptions().check());
+  LossOptions o;
+  o.unsure_to_lost = 0;
+  EXPECT_THROW(o.check(), std::invalid_argument);
+  o = LossOptions();
+  o.reacquire_confidence = 0.4;  // below tracking_confidence
+  EXPECT_THROW(o.check(), std::invalid_argument);
+  o = LossOptions();
+  o.reacquire_confidence = 1.1;
+  EXPECT_THROW(o.check(), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace scbt
