@@ -7,7 +7,8 @@ step) and space (run to the end of the input). Then an X screenshot of the whole
 r re-initialises with four clicks closed by a middle click, and Esc quits. The test checks the
 results file (first line = the clicked polygon, the tracked lines on the moved outline, the last
 line replaced by the re-drawn polygon), the saved input and annotated videos, and that the
-screenshot shows the yellow boundary on the moved outline and red detected segments.
+screenshot shows the boundary in the tracking state's green on the moved outline and red detected
+segments.
 
 Usage: interactive_xvfb_test.py SCBT_BINARY WORK_DIR
 Exit code 77 (ctest SKIP_RETURN_CODE) when Xvfb, xdotool, xwd/convert or cv2 are missing.
@@ -196,23 +197,23 @@ def main():
             count += 1
         assert count == FRAMES, f"{path}: {count} frames"
 
-    # The screenshot: the window at its place on the screen shows the yellow boundary along
-    # the outline of the last frame, and red kept segments.
+    # The screenshot: the window at its place on the screen shows the boundary in the tracking
+    # state's green (render/annotate.cc) along the outline of the last frame, and red kept segments.
     screen = cv2.imread(shot)
     assert screen is not None, shot
     x0, y0 = int(geo["X"]), int(geo["Y"])
     view = screen[y0:y0 + SIZE[1], x0:x0 + SIZE[0]].astype(int)
     b, g, r = view[:, :, 0], view[:, :, 1], view[:, :, 2]
-    yellow = (r > 200) & (g > 200) & (b < 100)
+    green = (r < 80) & (g > 180) & (b < 80)
     red = (r > 200) & (g < 80) & (b < 80)
     near = 0
     samples = sample_boundary(outline(FRAMES - 1), 4.0)
     for x, y in np.round(samples).astype(int):
-        if yellow[max(0, y - 3):y + 4, max(0, x - 3):x + 4].any():
+        if green[max(0, y - 3):y + 4, max(0, x - 3):x + 4].any():
             near += 1
     share = near / len(samples)
-    print(f"screenshot: {yellow.sum()} yellow px, {red.sum()} red px, "
-          f"{share:.0%} of the last outline has the yellow boundary within 3 px; "
+    print(f"screenshot: {green.sum()} green px, {red.sum()} red px, "
+          f"{share:.0%} of the last outline has the green boundary within 3 px; "
           f"frame 29 boundary error {boundary_error(last, outline(FRAMES - 2)):.2f} px")
     assert share > 0.9, share
     assert red.sum() > 50, red.sum()
