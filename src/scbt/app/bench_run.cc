@@ -13,7 +13,8 @@
 #include <stdexcept>
 #include <utility>
 
-#include "scbt/app/progress.h"
+#include "scbt/app/frame_writers.h"
+#include "scbt/app/sequence_runner.h"
 #include "scbt/eval/alignment_error.h"
 #include "scbt/eval/dataset.h"
 #include "scbt/geometry/polygon_io.h"
@@ -24,14 +25,6 @@
 
 namespace scbt {
 namespace {
-
-using Clock = std::chrono::steady_clock;
-
-double thread_cpu_ms() {
-  timespec t{};
-  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
-  return t.tv_sec * 1e3 + t.tv_nsec * 1e-6;
-}
 
 long peak_rss_kb() {
   rusage usage{};
@@ -50,22 +43,59 @@ std::vector<Polygon> read_truth(const std::string& path) {
 }
 
 // Per-frame samples of one configuration.
-struct Samples {
+struct Samples : FrameWriter {
   std::string config;
-  std::unique_ptr<Tracker> tracker;
+  std::unique_ptr<BdspPolygonTracker> tracker;
   std::vector<double> line, grouping, total, cpu;
   std::vector<double> filter, graph, search, choice;
   std::vector<Polygon> boundaries;  // per frame, the initial one first
   std::vector<double> errors;
   int held = 0;
   double detected = 0.0;
+
+  void write(const TrackedFrame& f) override {
+    const TrackResult& r = *f.result;
+    boundaries.push_back(r.boundary);
+    if (f.initial) return;
+    cpu.push_back(f.cpu_ms);
+    total.push_back(f.wall_ms);
+    line.push_back(r.line_ms);
+    grouping.push_back(r.grouping_ms);
+    filter.push_back(r.stages.filter_ms);
+    graph.push_back(r.stages.graph_ms);
+    search.push_back(r.stages.search_ms);
+    choice.push_back(r.stages.choice_ms);
+    held += r.held ? 1 : 0;
+    detected += r.num_detected;
+  }
 };
 
-Samples make_samples(const std::string& config, std::unique_ptr<Tracker> tracker) {
+Samples make_samples(const std::string& config, Tracker tracker) {
   Samples samples;
   samples.config = config;
-  samples.tracker = std::move(tracker);
+  samples.tracker = std::make_unique<BdspPolygonTracker>(std::move(tracker));
   return samples;
+}
+
+// Tracks the sequence with one configuration into `run` (its samples and boundaries) and scores
+// the boundaries afterwards. Returns the frame count.
+int track_pass(const DatasetSequence& sequence, const std::vector<Polygon>& truth,
+               const BenchRunOptions& options, int total_frames, FrameSource* source, Samples* run,
+               std::ostream& log) {
+  ProgressWriter progress(log, sequence.name + " " + run->config, total_frames, !options.quiet, 25);
+  SequenceRunOptions run_options;
+  run_options.max_frames = options.max_frames;
+  run_options.measure_cpu = true;
+  SequenceRunner runner(run->tracker.get(), source, {run, &progress}, run_options);
+  const cv::Size canvas = runner.read_first(sequence.frames).size();
+  runner.start(truth.front());
+  runner.run();
+  progress.finish();
+  for (size_t k = 0; k < run->boundaries.size(); ++k) {
+    run->errors.push_back(k < truth.size() ? alignment_error(run->boundaries[k], truth[k], canvas)
+                                           : std::numeric_limits<double>::infinity());
+  }
+  return runner.frames();
 }
 
 BenchConfigResult summarise(const Samples& s) {
@@ -121,114 +151,81 @@ TimeStats time_stats(std::vector<double> samples) {
   return stats;
 }
 
-BenchReport run_bench(const BenchRunOptions& options, std::ostream& log) {
-  options.check();
-  const std::vector<DatasetSequence> sequences =
-      select_dataset_sequences(options.dataset, options.sequences);
-  std::unique_ptr<AtomicFile> csv;
-  if (!options.csv.empty()) {
-    csv = std::make_unique<AtomicFile>(options.csv);
-    csv->stream() << "sequence,config,frames,line_median_ms,line_p90_ms,line_p99_ms,"
-                     "grouping_median_ms,grouping_p90_ms,grouping_p99_ms,filter_median_ms,"
-                     "graph_median_ms,search_median_ms,choice_median_ms,filter_mean_ms,"
-                     "graph_mean_ms,search_mean_ms,choice_mean_ms,total_mean_ms,"
-                     "total_median_ms,total_p90_ms,total_p99_ms,cpu_mean_ms,cpu_median_ms,fps,held,"
-                     "success_10px,"
-                     "mean_detected,peak_rss_kb\n";
+namespace {
+
+void write_csv_header(std::ostream& csv) {
+  csv << "sequence,config,frames,line_median_ms,line_p90_ms,line_p99_ms,"
+         "grouping_median_ms,grouping_p90_ms,grouping_p99_ms,filter_median_ms,"
+         "graph_median_ms,search_median_ms,choice_median_ms,filter_mean_ms,"
+         "graph_mean_ms,search_mean_ms,choice_mean_ms,total_mean_ms,"
+         "total_median_ms,total_p90_ms,total_p99_ms,cpu_mean_ms,cpu_median_ms,fps,held,"
+         "success_10px,"
+         "mean_detected,peak_rss_kb\n";
+}
+
+void write_csv_rows(std::ostream& csv, const BenchSequenceResult& result) {
+  for (const BenchConfigResult& c : result.configs) {
+    csv << result.name << ',' << c.config << ',' << result.frames << ',' << c.line.median << ','
+        << c.line.p90 << ',' << c.line.p99 << ',' << c.grouping.median << ',' << c.grouping.p90
+        << ',' << c.grouping.p99 << ',' << c.filter.median << ',' << c.graph.median << ','
+        << c.search.median << ',' << c.choice.median << ',' << c.filter.mean << ',' << c.graph.mean
+        << ',' << c.search.mean << ',' << c.choice.mean << ',' << c.total.mean << ','
+        << c.total.median << ',' << c.total.p90 << ',' << c.total.p99 << ',' << c.cpu.mean << ','
+        << c.cpu.median << ',' << c.fps << ',' << c.held << ',' << c.success_10px << ','
+        << c.mean_detected << ',' << result.peak_rss_kb << '\n';
+  }
+}
+
+// Both configurations over one sequence, each in a pass of its own.
+BenchSequenceResult bench_sequence(const DatasetSequence& sequence, const BenchRunOptions& options,
+                                   std::ostream& log) {
+  const std::vector<Polygon> truth = read_truth(sequence.ground_truth);
+  std::unique_ptr<FrameSource> source = open_frame_source(sequence.frames);
+  int total_frames = source->frame_count();
+  if (options.max_frames > 0 && (total_frames < 0 || total_frames > options.max_frames)) {
+    total_frames = options.max_frames;
   }
 
-  BenchReport report;
-  for (const DatasetSequence& sequence : sequences) {
-    const std::vector<Polygon> truth = read_truth(sequence.ground_truth);
-    std::unique_ptr<FrameSource> source = open_frame_source(sequence.frames);
-    int total_frames = source->frame_count();
-    if (options.max_frames > 0 && (total_frames < 0 || total_frames > options.max_frames)) {
-      total_frames = options.max_frames;
+  std::vector<Samples> runs;
+  runs.push_back(make_samples("optimised", Tracker(options.tracker)));
+  if (options.compare) {
+    TrackerOptions plain = options.tracker;
+    plain.detector.crop_to_boundary = false;
+    // The straightforward detector is OpenCV's EdgeDrawing, the library implementation of the
+    // paper's EDLines; other detectors are compared with themselves on the whole frame.
+    if (plain.detector.kind == LineDetectorKind::kEdLines) {
+      plain.detector.kind = LineDetectorKind::kOpenCvEdLines;
     }
-
-    std::vector<Samples> runs;
-    runs.push_back(make_samples("optimised", std::make_unique<Tracker>(options.tracker)));
-    if (options.compare) {
-      TrackerOptions plain = options.tracker;
-      plain.detector.crop_to_boundary = false;
-      // The straightforward detector is OpenCV's EdgeDrawing, the library implementation of the
-      // paper's EDLines; other detectors are compared with themselves on the whole frame.
-      if (plain.detector.kind == LineDetectorKind::kEdLines) {
-        plain.detector.kind = LineDetectorKind::kOpenCvEdLines;
-      }
-      // Stages 5-6 from reference/: BDSP on Boost.Graph, every candidate materialised.
-      runs.push_back(make_samples("straightforward", std::make_unique<Tracker>(plain, [] {
-                                    return std::make_unique<GenericCycleStage>();
-                                  })));
-    }
-
-    // Each configuration tracks the sequence in a pass of its own, as it would run alone, and
-    // the frames are scored after the pass: scoring a frame (a distance transform of the whole
-    // frame) between two tracked frames would evict the tracker's working set from the cache,
-    // which a tracker alone never sees. Decoding the frames stays between them, as in use.
-    int frames = 0;
-    for (Samples& run : runs) {
-      std::unique_ptr<FrameSource> pass_source =
-          &run == &runs.front() ? std::move(source) : open_frame_source(sequence.frames);
-      cv::Mat frame;
-      if (!pass_source->read(&frame)) throw std::runtime_error(sequence.frames + ": no frames");
-      const cv::Size canvas = frame.size();
-      run.tracker->init(frame, truth.front());
-      run.boundaries.push_back(truth.front());
-      ProgressBar progress(log, sequence.name + " " + run.config, total_frames, !options.quiet);
-      frames = 1;
-      while ((options.max_frames == 0 || frames < options.max_frames) &&
-             pass_source->read(&frame)) {
-        const double cpu_start = thread_cpu_ms();
-        const Clock::time_point start = Clock::now();
-        TrackResult result = run.tracker->track(frame);
-        run.cpu.push_back(thread_cpu_ms() - cpu_start);
-        run.total.push_back(
-            std::chrono::duration<double, std::milli>(Clock::now() - start).count());
-        run.line.push_back(result.line_ms);
-        run.grouping.push_back(result.grouping_ms);
-        run.filter.push_back(result.stages.filter_ms);
-        run.graph.push_back(result.stages.graph_ms);
-        run.search.push_back(result.stages.search_ms);
-        run.choice.push_back(result.stages.choice_ms);
-        run.held += result.held ? 1 : 0;
-        run.detected += result.num_detected;
-        run.boundaries.push_back(std::move(result.boundary));
-        ++frames;
-        if (frames % 25 == 0) progress.update(frames);
-      }
-      progress.finish(frames);
-      for (size_t k = 0; k < run.boundaries.size(); ++k) {
-        run.errors.push_back(k < truth.size() ? alignment_error(run.boundaries[k], truth[k], canvas)
-                                              : std::numeric_limits<double>::infinity());
-      }
-    }
-
-    BenchSequenceResult result;
-    result.name = sequence.name;
-    result.frames = frames;
-    for (const Samples& run : runs) result.configs.push_back(summarise(run));
-    result.peak_rss_kb = peak_rss_kb();
-    if (result.configs.size() > 1 && result.configs[0].total.mean > 0.0) {
-      result.speedup = result.configs[1].total.mean / result.configs[0].total.mean;
-    }
-    if (csv) {
-      for (const BenchConfigResult& c : result.configs) {
-        csv->stream() << result.name << ',' << c.config << ',' << result.frames << ','
-                      << c.line.median << ',' << c.line.p90 << ',' << c.line.p99 << ','
-                      << c.grouping.median << ',' << c.grouping.p90 << ',' << c.grouping.p99 << ','
-                      << c.filter.median << ',' << c.graph.median << ',' << c.search.median << ','
-                      << c.choice.median << ',' << c.filter.mean << ',' << c.graph.mean << ','
-                      << c.search.mean << ',' << c.choice.mean << ',' << c.total.mean << ','
-                      << c.total.median << ',' << c.total.p90 << ',' << c.total.p99 << ','
-                      << c.cpu.mean << ',' << c.cpu.median << ',' << c.fps << ',' << c.held << ','
-                      << c.success_10px << ',' << c.mean_detected << ',' << result.peak_rss_kb
-                      << '\n';
-      }
-    }
-    report.sequences.push_back(std::move(result));
+    // Stages 5-6 from reference/: BDSP on Boost.Graph, every candidate materialised.
+    runs.push_back(make_samples(
+        "straightforward", Tracker(plain, [] { return std::make_unique<GenericCycleStage>(); })));
   }
 
+  // Each configuration tracks the sequence in a pass of its own, as it would run alone, and
+  // the frames are scored after the pass: scoring a frame (a distance transform of the whole
+  // frame) between two tracked frames would evict the tracker's working set from the cache,
+  // which a tracker alone never sees. Decoding the frames stays between them, as in use.
+  int frames = 0;
+  for (Samples& run : runs) {
+    std::unique_ptr<FrameSource> pass_source =
+        &run == &runs.front() ? std::move(source) : open_frame_source(sequence.frames);
+    frames = track_pass(sequence, truth, options, total_frames, pass_source.get(), &run, log);
+  }
+
+  BenchSequenceResult result;
+  result.name = sequence.name;
+  result.frames = frames;
+  for (const Samples& run : runs) result.configs.push_back(summarise(run));
+  result.peak_rss_kb = peak_rss_kb();
+  if (result.configs.size() > 1 && result.configs[0].total.mean > 0.0) {
+    result.speedup = result.configs[1].total.mean / result.configs[0].total.mean;
+  }
+  return result;
+}
+
+// The means over sequences.
+void summarise_report(BenchReport* report_pointer) {
+  BenchReport& report = *report_pointer;
   for (const BenchSequenceResult& s : report.sequences) {
     report.mean_total_ms += s.configs[0].total.mean;
     report.slowest_total_ms = std::max(report.slowest_total_ms, s.configs[0].total.mean);
@@ -245,6 +242,25 @@ BenchReport run_bench(const BenchRunOptions& options, std::ostream& log) {
     report.mean_cpu_ms /= static_cast<double>(report.sequences.size());
     report.baseline_mean_cpu_ms /= static_cast<double>(report.sequences.size());
   }
+}
+
+}  // namespace
+
+BenchReport run_bench(const BenchRunOptions& options, std::ostream& log) {
+  options.check();
+  const std::vector<DatasetSequence> sequences =
+      select_dataset_sequences(options.dataset, options.sequences);
+  std::unique_ptr<AtomicFile> csv;
+  if (!options.csv.empty()) {
+    csv = std::make_unique<AtomicFile>(options.csv);
+    write_csv_header(csv->stream());
+  }
+  BenchReport report;
+  for (const DatasetSequence& sequence : sequences) {
+    report.sequences.push_back(bench_sequence(sequence, options, log));
+    if (csv) write_csv_rows(csv->stream(), report.sequences.back());
+  }
+  summarise_report(&report);
   if (csv) csv->commit();
   return report;
 }

@@ -8,7 +8,8 @@
 #include <opencv2/videoio.hpp>
 #include <stdexcept>
 
-#include "scbt/app/progress.h"
+#include "scbt/app/frame_writers.h"
+#include "scbt/app/sequence_runner.h"
 #include "scbt/geometry/polygon_io.h"
 #include "scbt/io/atomic_file.h"
 #include "scbt/render/annotate.h"
@@ -21,40 +22,93 @@ namespace {
 constexpr double kVideoFps = 30.0;
 const cv::Scalar kTruthColour(0, 200, 0);  // thin green, drawn over the tracked (yellow) outline
 
-// An MJPG .avi written under a temporary name and renamed when complete.
-class VideoOutput {
+// The rendered clip as a frame source; truth() is the current frame's true outline.
+class RenderedFrames : public FrameSource {
  public:
-  explicit VideoOutput(std::string path) : path_(std::move(path)) {
-    const fs::path p(path_);
-    temporary_ = (p.parent_path() / (".tmp-" + p.filename().string())).string();
+  RenderedFrames(const DemoOptions& options, const cv::Mat& background, const Polygon& model,
+                 const std::vector<Pose>& poses)
+      : options_(options), background_(background), model_(model), poses_(poses) {}
+  bool read(cv::Mat* image) override {
+    if (next_ >= static_cast<int>(poses_.size())) return false;
+    frame_ = render_frame(options_.scene, background_, model_, poses_[next_], next_);
+    ++next_;
+    *image = frame_.image;
+    return true;
   }
-  ~VideoOutput() {
-    if (writer_ && !committed_) {
-      writer_->release();
-      std::remove(temporary_.c_str());
+  int frame_count() const override { return static_cast<int>(poses_.size()); }
+  double fps() const override { return kVideoFps; }
+  std::string current_name() const override { return "frame " + std::to_string(next_); }
+  const Polygon& truth() const { return frame_.truth; }
+
+ private:
+  const DemoOptions& options_;
+  const cv::Mat& background_;
+  const Polygon& model_;
+  const std::vector<Pose>& poses_;
+  SceneFrame frame_;
+  int next_ = 0;
+};
+
+// truth.txt and errors.csv, and the error statistics of the summary.
+class DemoScoreWriter : public FrameWriter {
+ public:
+  DemoScoreWriter(const RenderedFrames* frames, DemoSummary* summary)
+      : frames_(frames),
+        summary_(summary),
+        truth_(summary->truth_path),
+        errors_(summary->errors_path) {
+    errors_.stream() << "frame,error_px,held,cost,area_similarity,line_ms,grouping_ms,total_ms\n";
+  }
+  void write(const TrackedFrame& f) override {
+    truth_.stream() << format_polygon_line(frames_->truth()) << '\n';
+    if (f.initial) {
+      errors_.stream() << "1,0,0,0,1,0,0,0\n";
+      return;
     }
-  }
-  void write(const cv::Mat& image) {
-    if (!writer_) {
-      writer_ = std::make_unique<cv::VideoWriter>(
-          temporary_, cv::VideoWriter::fourcc('M', 'J', 'P', 'G'), kVideoFps, image.size());
-      if (!writer_->isOpened()) throw std::runtime_error(path_ + ": cannot write video");
+    const TrackResult& r = *f.result;
+    const double error = mean_boundary_distance(r.boundary, frames_->truth(), 0.5);
+    summary_->errors.push_back(error);
+    if (error > summary_->max_error) {
+      summary_->max_error = error;
+      summary_->worst_frame = f.number;
     }
-    writer_->write(image);
+    char row[200];
+    std::snprintf(row, sizeof(row), "%d,%.4f,%d,%.6g,%.6g,%.4f,%.4f,%.4f\n", f.number, error,
+                  r.held ? 1 : 0, r.cost, r.area_similarity, r.line_ms, r.grouping_ms,
+                  r.total_ms());
+    errors_.stream() << row;
   }
-  void commit() {
-    if (!writer_) return;
-    writer_->release();
-    fs::rename(temporary_, path_);
-    committed_ = true;
+  void commit() override {
+    truth_.commit();
+    errors_.commit();
   }
 
  private:
-  std::string path_;
-  std::string temporary_;
-  std::unique_ptr<cv::VideoWriter> writer_;
-  bool committed_ = false;
+  const RenderedFrames* frames_;
+  DemoSummary* summary_;
+  AtomicFile truth_;
+  AtomicFile errors_;
 };
+
+// The caption of a frame: tracked or held, its error against the truth, the time.
+std::string demo_caption(const TrackedFrame& f, const Polygon& truth) {
+  if (f.initial) return "frame 1: initial boundary (truth)";
+  char status[200];
+  std::snprintf(status, sizeof(status), "frame %d  %s  error %.2f px  %.2f ms", f.number,
+                f.result->held ? "HELD" : "tracked",
+                mean_boundary_distance(f.result->boundary, truth, 0.5), f.result->total_ms());
+  return status;
+}
+
+// The motion path must stay inside the frame.
+void check_path(const cv::Rect2d& path, const cv::Size& size) {
+  if (path.x < 0 || path.y < 0 || path.x + path.width > size.width ||
+      path.y + path.height > size.height) {
+    throw std::invalid_argument("the object's motion path leaves the " +
+                                std::to_string(size.width) + "x" + std::to_string(size.height) +
+                                " frame; move the start pose or shrink the amplitudes");
+  }
+}
 
 }  // namespace
 
@@ -73,13 +127,7 @@ DemoSummary run_demo(const DemoOptions& options, std::ostream& log) {
   const Polygon model = object_model(options.scene);
   const std::vector<Pose> poses = smooth_motion_path(options.motion, options.frames);
   const cv::Rect2d path = path_region(model, poses);
-  const cv::Size size = options.scene.size;
-  if (path.x < 0 || path.y < 0 || path.x + path.width > size.width ||
-      path.y + path.height > size.height) {
-    throw std::invalid_argument("the object's motion path leaves the " +
-                                std::to_string(size.width) + "x" + std::to_string(size.height) +
-                                " frame; move the start pose or shrink the amplitudes");
-  }
+  check_path(path, options.scene.size);
   const cv::Mat background = render_background(options.scene, path);
 
   fs::create_directories(options.out_dir);
@@ -90,77 +138,44 @@ DemoSummary run_demo(const DemoOptions& options, std::ostream& log) {
   summary.errors_path = (dir / "errors.csv").string();
   if (options.video) summary.video_path = (dir / "demo.avi").string();
 
-  AtomicFile results(summary.results_path);
-  AtomicFile truth(summary.truth_path);
-  AtomicFile errors(summary.errors_path);
-  errors.stream() << "frame,error_px,held,cost,area_similarity,line_ms,grouping_ms,total_ms\n";
-  std::unique_ptr<VideoOutput> video;
-  if (options.video) video = std::make_unique<VideoOutput>(summary.video_path);
-
-  Tracker tracker(options.tracker);
-  tracker.set_keep_debug(options.video);
-  ProgressBar progress(log, "demo", options.frames, !options.quiet);
-
-  SceneFrame frame = render_frame(options.scene, background, model, poses[0], 0);
-  tracker.init(frame.image, frame.truth);
-  results.stream() << format_polygon_line(frame.truth) << '\n';
-  truth.stream() << format_polygon_line(frame.truth) << '\n';
-  errors.stream() << "1,0,0,0,1,0,0,0\n";
-  if (video) {
-    TrackResult initial;
-    initial.boundary = frame.truth;
-    video->write(annotate_frame(frame.image, {}, initial, "frame 1: initial boundary (truth)"));
+  RenderedFrames frames(options, background, model, poses);
+  BdspPolygonTracker bdsp{Tracker(options.tracker)};
+  bdsp.tracker().set_keep_debug(options.video);
+  ResultsWriter results(summary.results_path);
+  DemoScoreWriter score(&frames, &summary);
+  std::unique_ptr<AnnotationWriter> video;
+  if (options.video) {
+    video = std::make_unique<AnnotationWriter>(
+        &bdsp.tracker(), summary.video_path, kVideoFps, "",
+        [&frames](const TrackedFrame& f) { return demo_caption(f, frames.truth()); },
+        [&frames](const TrackedFrame& f, cv::Mat* image) {
+          if (!f.initial) draw_polygon(image, frames.truth(), kTruthColour, 1);
+        });
   }
-  summary.frames = 1;
+  RunStatistics stats;
+  ProgressWriter progress(log, "demo", options.frames, !options.quiet);
+  SequenceRunner runner(&bdsp, &frames, {&results, &score, video.get(), &stats, &progress});
+  runner.read_first("demo");
+  runner.start(frames.truth());
+  while (runner.step()) {
+  }
+  progress.finish();
+  runner.commit();
 
-  double total_ms = 0.0;
+  summary.frames = stats.frames;
+  summary.tracked = stats.tracked;
+  summary.held = stats.held;
+  const double n = summary.tracked;
   double error_sum = 0.0;
   int under_2px = 0;
-  for (int k = 1; k < options.frames; ++k) {
-    frame = render_frame(options.scene, background, model, poses[k], k);
-    const TrackResult r = tracker.track(frame.image);
-    const double error = mean_boundary_distance(r.boundary, frame.truth, 0.5);
-    ++summary.frames;
-    ++summary.tracked;
-    summary.held += r.held ? 1 : 0;
-    summary.errors.push_back(error);
-    error_sum += error;
-    under_2px += error < 2.0 ? 1 : 0;
-    if (error > summary.max_error) {
-      summary.max_error = error;
-      summary.worst_frame = k + 1;
-    }
-    total_ms += r.total_ms();
-
-    results.stream() << format_polygon_line(r.boundary) << '\n';
-    truth.stream() << format_polygon_line(frame.truth) << '\n';
-    char row[200];
-    std::snprintf(row, sizeof(row), "%d,%.4f,%d,%.6g,%.6g,%.4f,%.4f,%.4f\n", k + 1, error,
-                  r.held ? 1 : 0, r.cost, r.area_similarity, r.line_ms, r.grouping_ms,
-                  r.total_ms());
-    errors.stream() << row;
-    if (video) {
-      char status[200];
-      std::snprintf(status, sizeof(status), "frame %d  %s  error %.2f px  %.2f ms", k + 1,
-                    r.held ? "HELD" : "tracked", error, r.total_ms());
-      cv::Mat annotated = annotate_frame(frame.image, tracker.debug(), r, status);
-      draw_polygon(&annotated, frame.truth, kTruthColour, 1);
-      video->write(annotated);
-    }
-    progress.update(k + 1);
+  for (double e : summary.errors) {
+    error_sum += e;
+    under_2px += e < 2.0 ? 1 : 0;
   }
-  progress.finish(summary.frames);
-
-  const double n = summary.tracked;
   summary.mean_error = error_sum / n;
   summary.share_under_2px = under_2px / n;
-  summary.mean_ms = total_ms / n;
-  summary.fps = total_ms > 0.0 ? 1000.0 * n / total_ms : 0.0;
-
-  results.commit();
-  truth.commit();
-  errors.commit();
-  if (video) video->commit();
+  summary.mean_ms = stats.total_ms / n;
+  summary.fps = stats.fps();
   return summary;
 }
 

@@ -6,12 +6,12 @@
 #include <memory>
 #include <opencv2/highgui.hpp>
 #include <opencv2/imgproc.hpp>
-#include <opencv2/videoio.hpp>
 #include <stdexcept>
 #include <vector>
 
+#include "scbt/app/frame_writers.h"
+#include "scbt/app/sequence_runner.h"
 #include "scbt/geometry/polygon_io.h"
-#include "scbt/io/atomic_file.h"
 #include "scbt/io/frame_source.h"
 #include "scbt/render/annotate.h"
 
@@ -130,33 +130,6 @@ void on_mouse(int event, int x, int y, int /*flags*/, void* user) {
   }
 }
 
-int fourcc_for(const std::string& path) {
-  const auto dot = path.rfind('.');
-  const std::string ext = dot == std::string::npos ? "" : path.substr(dot);
-  if (ext == ".mp4" || ext == ".m4v") return cv::VideoWriter::fourcc('m', 'p', '4', 'v');
-  return cv::VideoWriter::fourcc('M', 'J', 'P', 'G');
-}
-
-// A video file opened on the first frame written.
-class LazyVideo {
- public:
-  LazyVideo(std::string path, double fps) : path_(std::move(path)), fps_(fps) {}
-  void write(const cv::Mat& image) {
-    if (path_.empty()) return;
-    if (!writer_.isOpened()) {
-      if (!writer_.open(path_, fourcc_for(path_), fps_, image.size(), image.channels() != 1)) {
-        throw std::runtime_error(path_ + ": cannot write video");
-      }
-    }
-    writer_.write(image);
-  }
-
- private:
-  std::string path_;
-  double fps_;
-  cv::VideoWriter writer_;
-};
-
 void put_text(cv::Mat* canvas, const std::string& text, cv::Point at) {
   cv::putText(*canvas, text, at, cv::FONT_HERSHEY_SIMPLEX, 0.5, cv::Scalar(0, 0, 0), 3,
               cv::LINE_AA);
@@ -178,66 +151,198 @@ const char* mode_name(InteractiveMode mode) {
   return "";
 }
 
-}  // namespace
+// What the window shows and the summary counts, kept up to date by the runner.
+class WindowState : public FrameWriter {
+ public:
+  explicit WindowState(InteractiveSummary* summary) : summary_(summary) {}
+  void write(const TrackedFrame& f) override {
+    last = *f.result;
+    show_debug = !f.initial;
+    summary_->frames = f.number;
+    if (f.initial) return;
+    ++summary_->tracked;
+    summary_->held += last.held ? 1 : 0;
+    total_ms += last.total_ms();
+    const double instant = last.total_ms() > 0 ? 1000.0 / last.total_ms() : 0.0;
+    fps_estimate = fps_estimate == 0.0 ? instant : 0.9 * fps_estimate + 0.1 * instant;
+  }
 
-InteractiveSummary run_interactive(const InteractiveRunOptions& options, std::ostream& log) {
-  const TrackRunOptions& track = options.track;
+  TrackResult last;
+  bool show_debug = false;
+  double fps_estimate = 0.0;
+  double total_ms = 0.0;
+
+ private:
+  InteractiveSummary* summary_;
+};
+
+// The annotated video shows the first initialisation only; re-initialisations replace no frame.
+class FirstInitialOnly : public FrameWriter {
+ public:
+  explicit FirstInitialOnly(FrameWriter* inner) : inner_(inner) {}
+  void write(const TrackedFrame& f) override {
+    if (f.initial && seen_initial_) return;
+    seen_initial_ = seen_initial_ || f.initial;
+    inner_->write(f);
+  }
+  void commit() override { inner_->commit(); }
+
+ private:
+  FrameWriter* inner_;
+  bool seen_initial_ = false;
+};
+
+void check_display() {
   // Without a display the GUI toolkit would abort the process; fail with a message instead.
   const char* display = std::getenv("DISPLAY");
   const char* wayland = std::getenv("WAYLAND_DISPLAY");
   if ((display == nullptr || *display == '\0') && (wayland == nullptr || *wayland == '\0')) {
     throw std::runtime_error("the interactive window needs a display: DISPLAY is not set");
   }
+}
+
+// The window: the frame, the segments, the boundary (or the polygon being drawn), status.
+cv::Mat draw_window(const cv::Mat& frame, const Tracker& tracker, const WindowState& state,
+                    const InteractiveSession& session, bool initialised, int frame_number) {
+  TrackResult shown = state.last;
+  if (session.mode() == InteractiveMode::kDrawing) shown.boundary.clear();
+  char status[160];
+  if (initialised) {
+    std::snprintf(status, sizeof(status), "frame %d %s %.0f fps [%s]", frame_number,
+                  state.last.held ? "HELD" : "tracked", state.fps_estimate,
+                  mode_name(session.mode()));
+  } else {
+    std::snprintf(status, sizeof(status), "frame %d  [%s]", frame_number,
+                  mode_name(session.mode()));
+  }
+  static const TrackDebug kNoDebug;
+  cv::Mat canvas =
+      annotate_frame(frame, state.show_debug ? tracker.debug() : kNoDebug, shown, status);
+  if (session.mode() == InteractiveMode::kDrawing) {
+    const Polygon& draft = session.draft();
+    for (size_t i = 0; i + 1 < draft.size(); ++i) {
+      cv::line(canvas, draft[i], draft[i + 1], cv::Scalar(0, 255, 0), 2, cv::LINE_AA);
+    }
+    for (const Point& p : draft) cv::circle(canvas, p, 3, cv::Scalar(0, 255, 0), -1);
+  }
+  put_text(&canvas, session.message(), {8, canvas.rows - 10});
+  return canvas;
+}
+
+// Feeds the mouse clicks and the key to the session; returns whether it asked to initialise.
+bool handle_input(MouseEvents* mouse, int key, InteractiveSession* session) {
+  std::vector<SessionAction> actions;
+  while (!mouse->events.empty()) {
+    const auto [event, point] = mouse->events.front();
+    mouse->events.pop_front();
+    actions.push_back(event == cv::EVENT_LBUTTONDOWN ? session->on_left_click(point)
+                                                     : session->on_middle_click());
+  }
+  actions.push_back(session->on_key(key));
+  return std::find(actions.begin(), actions.end(), SessionAction::kInitialise) != actions.end();
+}
+
+std::string video_caption(const TrackedFrame& f, const WindowState& state) {
+  if (f.initial) return "frame 1: initial boundary";
+  char text[128];
+  std::snprintf(text, sizeof(text), "frame %d %s %.0f fps", f.number,
+                f.result->held ? "HELD" : "tracked", state.fps_estimate);
+  return text;
+}
+
+// The files the session writes: results, the raw input and the annotated video, when asked.
+struct InteractiveOutputs {
+  InteractiveOutputs(const InteractiveRunOptions& options, const Tracker* tracker,
+                     const WindowState* state, double fps)
+      : results(options.track.output) {
+    if (!options.save_input.empty()) {
+      input_video = std::make_unique<InputVideoWriter>(options.save_input, fps);
+    }
+    if (!options.track.video.empty()) {
+      annotated = std::make_unique<AnnotationWriter>(
+          tracker, options.track.video, fps, "",
+          [state](const TrackedFrame& f) { return video_caption(f, *state); });
+      annotated_once = std::make_unique<FirstInitialOnly>(annotated.get());
+    }
+  }
+
+  ResultsWriter results;
+  std::unique_ptr<InputVideoWriter> input_video;
+  std::unique_ptr<AnnotationWriter> annotated;
+  std::unique_ptr<FirstInitialOnly> annotated_once;
+};
+
+// Tracks the next frame when the session wants one.
+void advance(SequenceRunner* runner, InteractiveSession* session, std::ostream& log) {
+  if (!runner->step()) {
+    session->end_of_input();
+    log << "interactive: end of input after " << runner->frames() << " frames\n" << std::flush;
+    return;
+  }
+  if (session->mode() != InteractiveMode::kRunning) {
+    log << "interactive: stepped to frame " << runner->frames() << '\n' << std::flush;
+  }
+  session->frame_done();
+}
+
+// How long to wait for input: paced playback while running, else a relaxed poll.
+int wait_ms(const InteractiveRunOptions& options, const InteractiveSession& session,
+            bool initialised) {
+  const bool busy = session.wants_frame() && !session.input_ended() && initialised;
+  if (!busy) return 30;
+  return options.playback_fps > 0 ? std::max(1, static_cast<int>(1000.0 / options.playback_fps))
+                                  : 1;
+}
+
+void finish_summary(int frames, const WindowState& state, InteractiveSummary* summary,
+                    std::ostream& log) {
+  summary->frames = frames;
+  summary->fps = state.total_ms > 0 ? 1000.0 * summary->tracked / state.total_ms : 0.0;
+  log << "interactive: " << summary->frames << " frames, " << summary->tracked << " tracked, "
+      << summary->held << " held, " << summary->initialisations << " initialisations, "
+      << summary->fps << " fps\n";
+}
+
+bool window_closed(const std::string& name) {
+  return cv::getWindowProperty(name, cv::WND_PROP_AUTOSIZE) < 0;
+}
+
+}  // namespace
+
+InteractiveSummary run_interactive(const InteractiveRunOptions& options, std::ostream& log) {
+  const TrackRunOptions& track = options.track;
+  check_display();
   const bool has_init = !track.init_file.empty() || !track.init_points.empty();
   const Polygon initial = has_init ? load_initial_polygon(track) : Polygon{};
-  Tracker tracker(track.tracker);
-  tracker.set_keep_debug(true);
+  BdspPolygonTracker bdsp{Tracker(track.tracker)};
+  bdsp.tracker().set_keep_debug(true);
   std::unique_ptr<FrameSource> source = open_frame_source(track.input);
   const double input_fps = source->fps() > 0 ? source->fps() : 30.0;
 
-  cv::Mat frame;
-  if (!source->read(&frame)) throw std::runtime_error(track.input + ": no frames");
   InteractiveSummary summary;
+  WindowState state(&summary);
+  InteractiveOutputs out(options, &bdsp.tracker(), &state, input_fps);
+  SequenceRunOptions run_options;
+  run_options.max_frames = track.max_frames;
+  SequenceRunner runner(&bdsp, source.get(),
+                        {out.input_video.get(), &state, &out.results, out.annotated_once.get()},
+                        run_options);
+  const cv::Mat& frame = runner.read_first(track.input);
   summary.frames = 1;
+  if (out.input_video) {
+    TrackedFrame first;  // the input video has it even if no polygon is ever drawn
+    first.number = 1;
+    first.image = &frame;
+    out.input_video->write(first);
+  }
 
-  LazyVideo input_video(options.save_input, input_fps);
-  LazyVideo annotated_video(track.video, input_fps);
-  input_video.write(frame);
-
-  std::vector<std::string> lines;  // results: one line per frame from the first initialisation
-  int first_line_frame = 0;        // 1-based frame of lines[0]
-  auto set_line = [&](int frame_number, const Polygon& polygon) {
-    if (lines.empty()) first_line_frame = frame_number;
-    const size_t index = static_cast<size_t>(frame_number - first_line_frame);
-    if (index < lines.size()) {
-      lines[index] = format_polygon_line(polygon);
-    } else {
-      lines.resize(index);  // frames shown before any initialisation stay empty (never happens
-                            // with the current flow: drawing freezes the input)
-      lines.push_back(format_polygon_line(polygon));
-    }
-  };
-
-  TrackResult last;
-  bool show_debug = false;
   bool initialised = false;
-  double fps_estimate = 0.0;
-  double total_ms = 0.0;
-
-  InteractiveSession session(has_init);
   auto initialise = [&](const Polygon& polygon) {
-    tracker.init(frame, polygon);
-    last = TrackResult{};
-    last.boundary = polygon;
-    show_debug = false;
-    set_line(summary.frames, polygon);
-    if (!initialised) {
-      annotated_video.write(annotate_frame(frame, {}, last, "frame 1: initial boundary"));
-    }
+    runner.start(polygon);
     initialised = true;
     ++summary.initialisations;
     log << "interactive: boundary of " << polygon.size() << " vertices set on frame "
-        << summary.frames << '\n'
+        << runner.frames() << '\n'
         << std::flush;
   };
   if (has_init) {
@@ -251,81 +356,18 @@ InteractiveSummary run_interactive(const InteractiveRunOptions& options, std::os
   cv::namedWindow(options.window_name, cv::WINDOW_AUTOSIZE | cv::WINDOW_GUI_NORMAL);
   MouseEvents mouse;
   cv::setMouseCallback(options.window_name, on_mouse, &mouse);
+  InteractiveSession session(has_init);
   log << "interactive: window '" << options.window_name << "' open, mode "
       << mode_name(session.mode()) << '\n'
       << std::flush;
-
   InteractiveMode logged_mode = session.mode();
   while (session.mode() != InteractiveMode::kQuit) {
     if (initialised && session.wants_frame() && !session.input_ended()) {
-      cv::Mat next;  // a failed read must not clear the frame on screen
-      if ((track.max_frames > 0 && summary.frames >= track.max_frames) || !source->read(&next)) {
-        session.end_of_input();
-        log << "interactive: end of input after " << summary.frames << " frames\n" << std::flush;
-      } else {
-        frame = next;
-        ++summary.frames;
-        input_video.write(frame);
-        last = tracker.track(frame);
-        show_debug = true;
-        ++summary.tracked;
-        summary.held += last.held ? 1 : 0;
-        total_ms += last.total_ms();
-        const double instant = last.total_ms() > 0 ? 1000.0 / last.total_ms() : 0.0;
-        fps_estimate = fps_estimate == 0.0 ? instant : 0.9 * fps_estimate + 0.1 * instant;
-        set_line(summary.frames, last.boundary);
-        char text[128];
-        std::snprintf(text, sizeof(text), "frame %d %s %.0f fps", summary.frames,
-                      last.held ? "HELD" : "tracked", fps_estimate);
-        annotated_video.write(annotate_frame(frame, tracker.debug(), last, text));
-        if (session.mode() != InteractiveMode::kRunning) {
-          log << "interactive: stepped to frame " << summary.frames << '\n' << std::flush;
-        }
-        session.frame_done();
-      }
+      advance(&runner, &session, log);
     }
-
-    // The window: the frame, the segments, the boundary (or the polygon being drawn), status.
-    TrackResult shown = last;
-    if (session.mode() == InteractiveMode::kDrawing) shown.boundary.clear();
-    char status[160];
-    if (initialised) {
-      std::snprintf(status, sizeof(status), "frame %d %s %.0f fps [%s]", summary.frames,
-                    last.held ? "HELD" : "tracked", fps_estimate, mode_name(session.mode()));
-    } else {
-      std::snprintf(status, sizeof(status), "frame %d  [%s]", summary.frames,
-                    mode_name(session.mode()));
-    }
-    static const TrackDebug kNoDebug;
-    cv::Mat canvas = annotate_frame(frame, show_debug ? tracker.debug() : kNoDebug, shown, status);
-    if (session.mode() == InteractiveMode::kDrawing) {
-      const Polygon& draft = session.draft();
-      for (size_t i = 0; i + 1 < draft.size(); ++i) {
-        cv::line(canvas, draft[i], draft[i + 1], cv::Scalar(0, 255, 0), 2, cv::LINE_AA);
-      }
-      for (const Point& p : draft) cv::circle(canvas, p, 3, cv::Scalar(0, 255, 0), -1);
-    }
-    put_text(&canvas, session.message(), {8, canvas.rows - 10});
-    cv::imshow(options.window_name, canvas);
-
-    const bool busy = session.wants_frame() && !session.input_ended() && initialised;
-    int delay = 30;
-    if (busy) {
-      delay = options.playback_fps > 0
-                  ? std::max(1, static_cast<int>(1000.0 / options.playback_fps))
-                  : 1;
-    }
-    const int key = cv::waitKeyEx(delay);
-    std::vector<SessionAction> actions;
-    while (!mouse.events.empty()) {
-      const auto [event, point] = mouse.events.front();
-      mouse.events.pop_front();
-      actions.push_back(event == cv::EVENT_LBUTTONDOWN ? session.on_left_click(point)
-                                                       : session.on_middle_click());
-    }
-    actions.push_back(session.on_key(key));
-    for (SessionAction action : actions) {
-      if (action != SessionAction::kInitialise) continue;
+    cv::imshow(options.window_name,
+               draw_window(frame, bdsp.tracker(), state, session, initialised, runner.frames()));
+    if (handle_input(&mouse, cv::waitKeyEx(wait_ms(options, session, initialised)), &session)) {
       const Polygon polygon = session.take_polygon();
       try {
         initialise(polygon);
@@ -337,28 +379,17 @@ InteractiveSummary run_interactive(const InteractiveRunOptions& options, std::os
     }
     if (session.mode() != logged_mode) {
       logged_mode = session.mode();
-      log << "interactive: mode " << mode_name(logged_mode) << " at frame " << summary.frames
+      log << "interactive: mode " << mode_name(logged_mode) << " at frame " << runner.frames()
           << '\n'
           << std::flush;
     }
-    if (session.mode() != InteractiveMode::kQuit &&
-        cv::getWindowProperty(options.window_name, cv::WND_PROP_AUTOSIZE) < 0) {
-      break;  // the window was closed
-    }
+    if (session.mode() != InteractiveMode::kQuit && window_closed(options.window_name)) break;
   }
   cv::destroyWindow(options.window_name);
   cv::waitKey(1);
-
-  if (!track.output.empty()) {
-    AtomicFile results(track.output);
-    for (const std::string& line : lines) results.stream() << line << '\n';
-    results.commit();
-  }
+  runner.commit();
   if (!track.csv.empty()) log << "interactive: --csv is not written in interactive mode\n";
-  summary.fps = total_ms > 0 ? 1000.0 * summary.tracked / total_ms : 0.0;
-  log << "interactive: " << summary.frames << " frames, " << summary.tracked << " tracked, "
-      << summary.held << " held, " << summary.initialisations << " initialisations, " << summary.fps
-      << " fps\n";
+  finish_summary(runner.frames(), state, &summary, log);
   return summary;
 }
 

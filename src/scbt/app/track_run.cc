@@ -11,6 +11,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "scbt/app/frame_writers.h"
 #include "scbt/app/progress.h"
 #include "scbt/geometry/polygon_io.h"
 #include "scbt/io/frame_source.h"
@@ -103,43 +104,7 @@ void write_csv_row(std::ostream& csv, int frame, const TrackResult& r, const std
   csv << line << csv_field(note) << '\n';
 }
 
-// Why a frame was hard, in words, for the CSV's note column ("" for an ordinary frame).
-std::string frame_note(const TrackResult& r, const cv::Size& size) {
-  std::string note;
-  auto add = [&note](const std::string& text) { note += (note.empty() ? "" : "; ") + text; };
-  if (r.num_dropped > 0) {
-    add("segments capped: " + std::to_string(r.num_dropped) + " of " +
-        std::to_string(r.num_kept + r.num_dropped) + " near the boundary dropped");
-  }
-  if (r.reacquired) add("re-acquired: the lost object was found again");
-  if (r.state == TrackState::kLost) {
-    add("lost: the last confident boundary is repeated");
-  } else if (r.held) {
-    if (r.num_detected == 0) {
-      add("held: no segments detected");
-    } else if (r.num_kept == 0) {
-      add("held: no segments near the boundary");
-    } else if (r.num_candidates == 0) {
-      add("held: no closed cycle among the segments");
-    } else {
-      add("held: every candidate rejected");
-    }
-  }
-  int outside = 0;
-  for (const Point& p : r.boundary) {
-    outside += (p.x < 0 || p.y < 0 || p.x > size.width || p.y > size.height) ? 1 : 0;
-  }
-  if (outside > 0) add(std::to_string(outside) + " boundary vertices outside the frame");
-  return note;
-}
-
 }  // namespace
-
-BadFramePolicy parse_bad_frame_policy(const std::string& name) {
-  if (name == "hold") return BadFramePolicy::kHold;
-  if (name == "stop") return BadFramePolicy::kStop;
-  throw std::invalid_argument("--on-bad-frame must be hold or stop, got '" + name + "'");
-}
 
 Polygon load_initial_polygon(const TrackRunOptions& options) {
   const int given = (options.init_file.empty() ? 0 : 1) + (options.init_points.empty() ? 0 : 1) +

@@ -5,17 +5,11 @@
 #include <ostream>
 #include <string>
 
+#include "scbt/app/sequence_runner.h"
 #include "scbt/app/track_depth.h"
 #include "scbt/tracker/tracker.h"
 
 namespace scbt {
-
-// What `scbt track` does with a frame that cannot be decoded or does not fit the sequence (size
-// change, unusable pixel format): report it on `log`, hold the boundary and go on, or stop.
-enum class BadFramePolicy { kHold, kStop };
-
-// Parses "hold" / "stop". Throws std::invalid_argument naming the value.
-BadFramePolicy parse_bad_frame_policy(const std::string& name);
 
 struct TrackRunOptions {
   std::string input;        // video file, image folder or camera index

@@ -68,11 +68,9 @@ int CycleSearch::shortest_paths(int tree, int source, int num_thirds, double lim
   position[source] = 0;
   int settled = 0, thirds_left = num_thirds;
   int size = 1;
-  // A unit not in the frontier goes in slot `size` (only kept if it improved). Written as
-  // selects, but the compiler branches on `better`, which is right: about a quarter of the arcs
-  // improve on the dataset (half reach settled units), and a version forced branch-free with
-  // masks measured ~10 % slower. Sorted arcs also help (unsorted, with a per-arc limit test:
-  // ~25 % slower).
+  // A unit not in the frontier goes in slot `size` (only kept if it improved). Arcs are sorted
+  // by weight so that a bounded search stops at the first one past `limit`; the variants tried
+  // and measured slower are in docs/performance.md.
   const auto relax = [&](double d, int k) {
     const double candidate = d + arcs[k].weight;
     const int w = arcs[k].unit;
@@ -89,19 +87,7 @@ int CycleSearch::shortest_paths(int tree, int source, int num_thirds, double lim
   };
   while (size > 0) {
     // The frontier is small (about a dozen units on these graphs): an unordered array scanned
-    // for its least (distance, id) key beats a heap's unpredictable branches. Per settle on
-    // MarkCup's tracker graphs: 14 keys scanned, 5.5 arcs relaxed (26 % improve, 49 % reach
-    // settled units). Also measured slower, in one process against this code (least of 10
-    // passes, core 1, MarkCup / Bowl): distances and ids in two arrays, least distance by packed
-    // SSE2 minimums and its slot by a mask of equal lanes (x1.00 / x0.90; scalar with four
-    // accumulators x0.90 / x0.90); even and odd slots scanned as two chains (x0.76 / x0.79);
-    // groups of three over padded slots (x0.85 / x0.86); scanning only the keys within a band
-    // (0.3, 1 or 3 mean arc weights) above the least, all of them when it runs empty
-    // (x0.87-0.95); skipping the arc back along the parent arc (x0.90 / x0.94). Distances and
-    // ids in two arrays padded to whole vectors, the least found by AVX2 minimums four at a
-    // time and its slot by equal-lane masks (a function per settle): x0.96 over the tracker on
-    // all six sequences (alternating harness runs, least of 3), though it ran half the
-    // instructions of the scan.
+    // for its least (distance, id) key beats a heap's unpredictable branches.
     int best = 0;
     FrontierKey least = frontier[0];
     for (int k = 1; k < size; ++k) {

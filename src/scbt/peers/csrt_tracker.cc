@@ -36,7 +36,7 @@ CsrtTracker::~CsrtTracker() = default;
 
 void CsrtTracker::init(const cv::Mat& frame, const Polygon& polygon) {
   cv::Mat gray;
-  check_peer_init(frame, polygon, &gray);
+  check_tracker_init(frame, polygon, &gray);
   frame_size_ = frame.size();
   polygon0_ = polygon;
   area0_ = area(polygon);

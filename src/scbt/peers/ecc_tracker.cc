@@ -77,7 +77,7 @@ EccTracker::EccTracker(const EccTrackerOptions& options) : options_(options) { o
 
 void EccTracker::init(const cv::Mat& frame, const Polygon& polygon) {
   cv::Mat gray;
-  check_peer_init(frame, polygon, &gray);
+  check_tracker_init(frame, polygon, &gray);
   frame_size_ = frame.size();
   const cv::Rect box = grown_box(polygon, options_.template_margin, frame_size_);
   cv::Mat full;

@@ -58,7 +58,7 @@ KltTracker::KltTracker(const KltTrackerOptions& options) : options_(options) { o
 
 void KltTracker::init(const cv::Mat& frame, const Polygon& polygon) {
   cv::Mat gray;
-  check_peer_init(frame, polygon, &gray);
+  check_tracker_init(frame, polygon, &gray);
   frame_size_ = frame.size();
   polygon0_ = polygon;
   area0_ = area(polygon);

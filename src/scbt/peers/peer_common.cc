@@ -9,28 +9,6 @@
 
 namespace scbt {
 
-void check_peer_init(const cv::Mat& frame, const Polygon& polygon, cv::Mat* gray) {
-  to_gray(frame, gray);
-  check_boundary_polygon(polygon);
-  for (size_t i = 0; i < polygon.size(); ++i) {
-    const Point& p = polygon[i];
-    if (p.x < 0 || p.y < 0 || p.x > frame.cols || p.y > frame.rows) {
-      throw std::invalid_argument("polygon vertex " + std::to_string(i + 1) + " (" +
-                                  std::to_string(p.x) + ", " + std::to_string(p.y) +
-                                  ") is outside the " + std::to_string(frame.cols) + "x" +
-                                  std::to_string(frame.rows) + " frame");
-    }
-  }
-}
-
-void check_frame_size(const cv::Mat& frame, const cv::Size& expected) {
-  if (frame.size() != expected) {
-    throw std::invalid_argument("frame size changed from " + std::to_string(expected.width) + "x" +
-                                std::to_string(expected.height) + " to " +
-                                std::to_string(frame.cols) + "x" + std::to_string(frame.rows));
-  }
-}
-
 Polygon apply_homography(const cv::Mat& h, const Polygon& polygon) {
   Polygon out;
   out.reserve(polygon.size());

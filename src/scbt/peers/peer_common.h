@@ -1,4 +1,4 @@
-// Small pieces shared by the peer trackers: the init checks every tracker applies, warping a
+// Small pieces shared by the peer trackers (the init checks are tracker/frame_checks.h): warping a
 // polygon by a homography, the numeric blow-up guard, and a stopwatch.
 #pragma once
 
@@ -6,17 +6,9 @@
 #include <opencv2/core/mat.hpp>
 
 #include "scbt/geometry/polygon.h"
+#include "scbt/tracker/frame_checks.h"
 
 namespace scbt {
-
-// The checks of Tracker::init: 8-bit frame of 1, 3 or 4 channels, a usable boundary polygon
-// (check_boundary_polygon) whose vertices lie inside the frame. Writes the grey frame to `gray`.
-// Throws std::invalid_argument naming the problem.
-void check_peer_init(const cv::Mat& frame, const Polygon& polygon, cv::Mat* gray);
-
-// Throws std::invalid_argument when `frame` is not `expected` in size (frame sizes must not
-// change during a sequence).
-void check_frame_size(const cv::Mat& frame, const cv::Size& expected);
 
 // Maps every vertex through the 3x3 homography `h` (CV_64F). Vertices mapped to infinity come
 // out non-finite, which plausible_update rejects.

@@ -11,18 +11,6 @@
 namespace scbt {
 namespace {
 
-class BdspTracker : public PolygonTracker {
- public:
-  explicit BdspTracker(const TrackerOptions& options) : tracker_(options) {}
-  void init(const cv::Mat& frame, const Polygon& polygon) override {
-    tracker_.init(frame, polygon);
-  }
-  TrackResult track(const cv::Mat& frame) override { return tracker_.track(frame); }
-
- private:
-  Tracker tracker_;
-};
-
 // The floor every tracker must beat: the initial polygon, never moved.
 class StaticTracker : public PolygonTracker {
  public:
@@ -51,7 +39,7 @@ std::vector<std::string> polygon_tracker_names() {
 
 std::unique_ptr<PolygonTracker> make_polygon_tracker(const std::string& name,
                                                      const TrackerOptions& options) {
-  if (name == "bdsp") return std::make_unique<BdspTracker>(options);
+  if (name == "bdsp") return std::make_unique<BdspPolygonTracker>(Tracker(options));
   if (name == "ecc") return std::make_unique<EccTracker>();
   if (name == "klt") return std::make_unique<KltTracker>();
   if (name == "csrt") return std::make_unique<CsrtTracker>();

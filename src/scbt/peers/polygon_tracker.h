@@ -5,6 +5,7 @@
 #include <memory>
 #include <opencv2/core/mat.hpp>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "scbt/tracker/tracker.h"
@@ -19,6 +20,20 @@ class PolygonTracker {
   // result.boundary is always a polygon; result.held marks a frame where the tracker kept its
   // previous answer. Peers fill the timing fields they can (grouping_ms = their whole time).
   virtual TrackResult track(const cv::Mat& frame) = 0;
+};
+
+// scbt's own tracker behind the common face; tracker() reaches its debug data and options.
+class BdspPolygonTracker : public PolygonTracker {
+ public:
+  explicit BdspPolygonTracker(Tracker tracker) : tracker_(std::move(tracker)) {}
+  void init(const cv::Mat& frame, const Polygon& polygon) override {
+    tracker_.init(frame, polygon);
+  }
+  TrackResult track(const cv::Mat& frame) override { return tracker_.track(frame); }
+  Tracker& tracker() { return tracker_; }
+
+ private:
+  Tracker tracker_;
 };
 
 // Names accepted by make_polygon_tracker, in a stable order.

@@ -33,7 +33,7 @@ RrcTracker::~RrcTracker() = default;
 
 void RrcTracker::init(const cv::Mat& frame, const Polygon& polygon) {
   cv::Mat gray;
-  check_peer_init(frame, polygon, &gray);
+  check_tracker_init(frame, polygon, &gray);
   frame_size_ = frame.size();
   boundary_ = polygon;
 }

@@ -8,8 +8,8 @@
 #include <utility>
 
 #include "scbt/filter/segment_filter.h"
-#include "scbt/geometry/polygon_io.h"
 #include "scbt/lines/line_detector.h"
+#include "scbt/tracker/frame_checks.h"
 #include "scbt/tracker/motion_estimate.h"
 
 namespace scbt {
@@ -32,27 +32,6 @@ void Tracker::add_retry_times(const Attempt& retry, TrackResult* result) {
   result->stages.choice_ms += retry.stages.choice_ms;
 }
 
-void to_gray(const cv::Mat& frame, cv::Mat* gray) {
-  if (frame.empty()) throw std::invalid_argument("frame is empty");
-  if (frame.depth() != CV_8U) {
-    throw std::invalid_argument("frame must be 8-bit, got depth " + std::to_string(frame.depth()));
-  }
-  switch (frame.channels()) {
-    case 1:
-      *gray = frame;
-      return;
-    case 3:
-      cv::cvtColor(frame, *gray, cv::COLOR_BGR2GRAY);
-      return;
-    case 4:
-      cv::cvtColor(frame, *gray, cv::COLOR_BGRA2GRAY);
-      return;
-    default:
-      throw std::invalid_argument("frame must have 1, 3 or 4 channels, got " +
-                                  std::to_string(frame.channels()));
-  }
-}
-
 Tracker::Tracker(const TrackerOptions& options)
     : Tracker(options, [] { return std::make_unique<FastCycleStage>(); }) {}
 
@@ -69,18 +48,7 @@ Tracker::Tracker(Tracker&&) noexcept = default;
 Tracker& Tracker::operator=(Tracker&&) noexcept = default;
 
 void Tracker::init(const cv::Mat& frame, const Polygon& polygon) {
-  to_gray(frame, &gray_);
-  check_boundary_polygon(polygon);
-  const cv::Rect2d frame_rect(0, 0, frame.cols, frame.rows);
-  for (size_t i = 0; i < polygon.size(); ++i) {
-    const Point& p = polygon[i];
-    if (p.x < 0 || p.y < 0 || p.x > frame.cols || p.y > frame.rows) {
-      throw std::invalid_argument("polygon vertex " + std::to_string(i + 1) + " (" +
-                                  std::to_string(p.x) + ", " + std::to_string(p.y) +
-                                  ") is outside the " + std::to_string(frame.cols) + "x" +
-                                  std::to_string(frame.rows) + " frame");
-    }
-  }
+  check_tracker_init(frame, polygon, &gray_);
   boundary_ = polygon;
   boundary_area_ = area(polygon);
   reference_roi_ = cv::Rect(cv::Point(0, 0), frame.size());
@@ -167,11 +135,7 @@ bool Tracker::confirmed(const cv::Mat& frame, const Polygon& moved, const Polygo
 TrackResult Tracker::track(const cv::Mat& frame) {
   if (!initialized()) throw std::logic_error("Tracker::track called before init");
   if (frame.empty()) to_gray(frame, &gray_);  // throws
-  if (frame.size() != frame_size_) {
-    throw std::invalid_argument("frame size changed from " + std::to_string(frame_size_.width) +
-                                "x" + std::to_string(frame_size_.height) + " to " +
-                                std::to_string(frame.cols) + "x" + std::to_string(frame.rows));
-  }
+  check_frame_size(frame, frame_size_);
   if (monitor_.state() == TrackState::kLost) return track_lost(frame);
   TrackResult result;
   Attempt* a = &attempts_[0];

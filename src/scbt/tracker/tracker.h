@@ -11,6 +11,7 @@
 #include "scbt/graph/segment_graph.h"
 #include "scbt/tracker/contrast_profile.h"
 #include "scbt/tracker/cycle_stage.h"
+#include "scbt/tracker/frame_checks.h"
 #include "scbt/tracker/motion_model.h"
 #include "scbt/tracker/reacquire.h"
 #include "scbt/tracker/track_state.h"
@@ -145,9 +146,5 @@ class Tracker {
   bool keep_debug_ = false;
   TrackDebug debug_;
 };
-
-// Converts an 8-bit frame of 1, 3 or 4 channels to grey (no copy for grey input).
-// Throws std::invalid_argument for anything else.
-void to_gray(const cv::Mat& frame, cv::Mat* gray);
 
 }  // namespace scbt
