@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cstdlib>
 #include <deque>
+#include <functional>
 #include <memory>
 #include <opencv2/highgui.hpp>
 #include <opencv2/imgproc.hpp>
@@ -307,6 +308,48 @@ bool window_closed(const std::string& name) {
   return cv::getWindowProperty(name, cv::WND_PROP_AUTOSIZE) < 0;
 }
 
+// The window's event loop: track while running, draw, and take the user's keys and polygons
+// until quit or the window is closed.
+void run_window(const InteractiveRunOptions& options, SequenceRunner* runner,
+                const Tracker& tracker, const WindowState& state, const cv::Mat& frame,
+                bool has_init, const std::function<void(const Polygon&)>& initialise,
+                const bool* initialised, std::ostream& log) {
+  cv::namedWindow(options.window_name, cv::WINDOW_AUTOSIZE | cv::WINDOW_GUI_NORMAL);
+  MouseEvents mouse;
+  cv::setMouseCallback(options.window_name, on_mouse, &mouse);
+  InteractiveSession session(has_init);
+  log << "interactive: window '" << options.window_name << "' open, mode "
+      << mode_name(session.mode()) << '\n'
+      << std::flush;
+  InteractiveMode logged_mode = session.mode();
+  while (session.mode() != InteractiveMode::kQuit) {
+    if (*initialised && session.wants_frame() && !session.input_ended()) {
+      advance(runner, &session, log);
+    }
+    cv::imshow(options.window_name,
+               draw_window(frame, tracker, state, session, *initialised, runner->frames()));
+    if (handle_input(&mouse, cv::waitKeyEx(wait_ms(options, session, *initialised)), &session)) {
+      const Polygon polygon = session.take_polygon();
+      try {
+        initialise(polygon);
+        session.polygon_accepted();
+      } catch (const std::invalid_argument& e) {
+        session.polygon_rejected(e.what());
+        log << "interactive: polygon rejected: " << e.what() << '\n' << std::flush;
+      }
+    }
+    if (session.mode() != logged_mode) {
+      logged_mode = session.mode();
+      log << "interactive: mode " << mode_name(logged_mode) << " at frame " << runner->frames()
+          << '\n'
+          << std::flush;
+    }
+    if (session.mode() != InteractiveMode::kQuit && window_closed(options.window_name)) break;
+  }
+  cv::destroyWindow(options.window_name);
+  cv::waitKey(1);
+}
+
 }  // namespace
 
 InteractiveSummary run_interactive(const InteractiveRunOptions& options, std::ostream& log) {
@@ -353,40 +396,8 @@ InteractiveSummary run_interactive(const InteractiveRunOptions& options, std::os
     }
   }
 
-  cv::namedWindow(options.window_name, cv::WINDOW_AUTOSIZE | cv::WINDOW_GUI_NORMAL);
-  MouseEvents mouse;
-  cv::setMouseCallback(options.window_name, on_mouse, &mouse);
-  InteractiveSession session(has_init);
-  log << "interactive: window '" << options.window_name << "' open, mode "
-      << mode_name(session.mode()) << '\n'
-      << std::flush;
-  InteractiveMode logged_mode = session.mode();
-  while (session.mode() != InteractiveMode::kQuit) {
-    if (initialised && session.wants_frame() && !session.input_ended()) {
-      advance(&runner, &session, log);
-    }
-    cv::imshow(options.window_name,
-               draw_window(frame, bdsp.tracker(), state, session, initialised, runner.frames()));
-    if (handle_input(&mouse, cv::waitKeyEx(wait_ms(options, session, initialised)), &session)) {
-      const Polygon polygon = session.take_polygon();
-      try {
-        initialise(polygon);
-        session.polygon_accepted();
-      } catch (const std::invalid_argument& e) {
-        session.polygon_rejected(e.what());
-        log << "interactive: polygon rejected: " << e.what() << '\n' << std::flush;
-      }
-    }
-    if (session.mode() != logged_mode) {
-      logged_mode = session.mode();
-      log << "interactive: mode " << mode_name(logged_mode) << " at frame " << runner.frames()
-          << '\n'
-          << std::flush;
-    }
-    if (session.mode() != InteractiveMode::kQuit && window_closed(options.window_name)) break;
-  }
-  cv::destroyWindow(options.window_name);
-  cv::waitKey(1);
+  run_window(options, &runner, bdsp.tracker(), state, frame, has_init, initialise, &initialised,
+             log);
   runner.commit();
   if (!track.csv.empty()) log << "interactive: --csv is not written in interactive mode\n";
   finish_summary(runner.frames(), state, &summary, log);

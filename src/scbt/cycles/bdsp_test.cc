@@ -15,6 +15,7 @@
 #include <utility>
 
 #include "scbt/choice/boundary_choice.h"
+#include "scbt/graph/random_graphs.h"
 #include "scbt/graph/segment_graph.h"
 #include "scbt/reference/bdsp_generic.h"
 #include "scbt/reference/candidate_gate.h"
@@ -24,37 +25,6 @@ namespace scbt {
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
-
-double cross(const Point& o, const Point& a, const Point& b) {
-  return (a.x - o.x) * (b.y - o.y) - (a.y - o.y) * (b.x - o.x);
-}
-bool properly_cross(const Segment& s, const Segment& t) {
-  const double d1 = cross(s.a, s.b, t.a), d2 = cross(s.a, s.b, t.b);
-  const double d3 = cross(t.a, t.b, s.a), d4 = cross(t.a, t.b, s.b);
-  return ((d1 > 0 && d2 < 0) || (d1 < 0 && d2 > 0)) && ((d3 > 0 && d4 < 0) || (d3 < 0 && d4 > 0));
-}
-
-// Short random segments in a 300 px square, none crossing an earlier one; some share endpoints.
-std::vector<Segment> random_segments(std::mt19937& rng, int count) {
-  std::uniform_real_distribution<double> pos(0.0, 300.0), len(5.0, 50.0), angle(-kPi, kPi);
-  std::uniform_int_distribution<int> coin(0, 3);
-  std::vector<Segment> segments;
-  for (int attempt = 0; static_cast<int>(segments.size()) < count && attempt < 50 * count;
-       ++attempt) {
-    Point a(pos(rng), pos(rng));
-    if (!segments.empty() && coin(rng) == 0) {
-      std::uniform_int_distribution<size_t> pick(0, segments.size() - 1);
-      a = segments[pick(rng)].b;
-    }
-    const double t = angle(rng);
-    const Segment s{a, a + Point(std::cos(t), std::sin(t)) * len(rng)};
-    if (std::none_of(segments.begin(), segments.end(),
-                     [&](const Segment& other) { return properly_cross(s, other); })) {
-      segments.push_back(s);
-    }
-  }
-  return segments;
-}
 
 // Edge index by unordered vertex pair.
 std::map<std::pair<int, int>, int> edge_index(const SegmentGraph& graph) {
@@ -194,7 +164,7 @@ class BdspMatchesReference : public ::testing::TestWithParam<unsigned> {};
 TEST_P(BdspMatchesReference, SameCandidatesInSameOrder) {
   std::mt19937 rng(GetParam() * 7919u + 3u);
   std::uniform_int_distribution<int> count(3, 120), stride(1, 3);
-  const SegmentGraph graph = build_segment_graph(random_segments(rng, count(rng)));
+  const SegmentGraph graph = build_segment_graph(random_segments(rng, count(rng), true));
   BdspOptions options;
   options.seed_stride = stride(rng);
   const std::vector<CycleCandidate> expected = reference_candidates(graph, options.seed_stride);
@@ -242,7 +212,7 @@ TEST(CycleSearch, MatchesReferenceOnReusedBuffers) {
     const int count = std::uniform_int_distribution<int>(3, 100)(rng);
     const bool grid = trial % 2 == 0;
     const SegmentGraph graph =
-        build_segment_graph(grid ? grid_segments(rng, count) : random_segments(rng, count));
+        build_segment_graph(grid ? grid_segments(rng, count) : random_segments(rng, count, true));
     BdspOptions options;
     options.seed_stride = std::uniform_int_distribution<int>(1, 3)(rng);
     search.run(graph, options);
@@ -269,24 +239,8 @@ TEST(CycleSearch, MatchesReferenceOnReusedBuffers) {
 // lengths that tie in exact arithmetic may or may not tie once rounded, differently from each
 // root, which is where the two trees can part and meet again.
 SegmentGraph rounding_graph(std::mt19937& rng, int n, int m) {
-  SegmentGraph graph;
-  std::uniform_real_distribution<double> pos(0.0, 100.0);
-  std::uniform_int_distribution<int> vertex(0, n - 1), coin(0, 3), tenths(1, 7);
-  for (int i = 0; i < n; ++i) graph.vertices.emplace_back(pos(rng), pos(rng));
-  for (int i = 0; i < m; ++i) {
-    GraphEdge e;
-    e.u = vertex(rng);
-    do {
-      e.v = vertex(rng);
-    } while (e.v == e.u);
-    e.detected = coin(rng) == 0;
-    e.weight = e.detected ? 0.0 : 0.1 * tenths(rng);
-    e.length = e.weight;
-    if (e.detected) graph.detected_edges.push_back(i);
-    graph.edges.push_back(e);
-  }
-  build_adjacency(&graph);
-  return graph;
+  return random_multigraph(
+      rng, n, m, [](std::mt19937& r) { return 0.1 * std::uniform_int_distribution<int>(1, 7)(r); });
 }
 
 TEST(CycleSearch, ShortestPathCyclesWithRoundedTies) {
@@ -323,7 +277,7 @@ class BdspProperty : public ::testing::TestWithParam<unsigned> {};
 TEST_P(BdspProperty, CandidatesAreSimpleCyclesClosedBySeed) {
   std::mt19937 rng(GetParam() * 101u + 11u);
   std::uniform_int_distribution<int> count(3, 30), stride(1, 3);
-  const SegmentGraph graph = build_segment_graph(random_segments(rng, count(rng)));
+  const SegmentGraph graph = build_segment_graph(random_segments(rng, count(rng), true));
   BdspOptions options;
   options.seed_stride = stride(rng);
   const std::vector<CycleCandidate> candidates = search_cycle_candidates(graph, options);
@@ -501,7 +455,7 @@ GatedCase gated_case(unsigned trial) {
     c.graph = build_segment_graph(scene.segments);
     c.previous = scene.outline;
   } else {
-    c.graph = build_segment_graph(c.kind == GatedCase::kRandom ? random_segments(rng, count)
+    c.graph = build_segment_graph(c.kind == GatedCase::kRandom ? random_segments(rng, count, true)
                                                                : grid_segments(rng, count));
   }
   c.options.seed_stride = std::uniform_int_distribution<int>(1, 3)(rng);

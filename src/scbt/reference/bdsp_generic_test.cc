@@ -10,44 +10,12 @@
 #include <stdexcept>
 
 #include "scbt/cycles/bdsp.h"
+#include "scbt/graph/random_graphs.h"
 #include "scbt/graph/segment_graph.h"
 #include "scbt/reference/generic_cycle_stage.h"
 
 namespace scbt {
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
-
-bool properly_cross(const Segment& s, const Segment& t) {
-  const auto cross = [](const Point& o, const Point& a, const Point& b) {
-    return (a.x - o.x) * (b.y - o.y) - (a.y - o.y) * (b.x - o.x);
-  };
-  const double d1 = cross(s.a, s.b, t.a), d2 = cross(s.a, s.b, t.b);
-  const double d3 = cross(t.a, t.b, s.a), d4 = cross(t.a, t.b, s.b);
-  return ((d1 > 0 && d2 < 0) || (d1 < 0 && d2 > 0)) && ((d3 > 0 && d4 < 0) || (d3 < 0 && d4 > 0));
-}
-
-// Short non-crossing random segments in a 300 px square. With `share_endpoints`, about one in
-// four starts where an earlier one ends (zero-weight paths of several segments, and ties).
-std::vector<Segment> random_segments(std::mt19937& rng, int count, bool share_endpoints) {
-  std::uniform_real_distribution<double> pos(0.0, 300.0), len(5.0, 50.0), angle(-kPi, kPi);
-  std::uniform_int_distribution<int> coin(0, 3);
-  std::vector<Segment> segments;
-  for (int attempt = 0; static_cast<int>(segments.size()) < count && attempt < 50 * count;
-       ++attempt) {
-    Point a(pos(rng), pos(rng));
-    if (share_endpoints && !segments.empty() && coin(rng) == 0) {
-      a = segments[std::uniform_int_distribution<size_t>(0, segments.size() - 1)(rng)].b;
-    }
-    const double t = angle(rng);
-    const Segment s{a, a + Point(std::cos(t), std::sin(t)) * len(rng)};
-    if (std::none_of(segments.begin(), segments.end(),
-                     [&](const Segment& other) { return properly_cross(s, other); })) {
-      segments.push_back(s);
-    }
-  }
-  return segments;
-}
 
 // Least Γ = gap / area among candidates whose area is within `min_similarity` of `area`
 // (infinity when none is).

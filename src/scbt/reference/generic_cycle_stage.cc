@@ -6,21 +6,9 @@ namespace scbt {
 
 void GenericCycleStage::search(const SegmentGraph& graph, const BdspOptions& options) {
   candidates_ = search_cycle_candidates_generic(graph, options);
-}
-
-std::optional<BoundaryChoice> GenericCycleStage::choose(StableChooser* chooser,
-                                                        const SegmentGraph& graph,
-                                                        const Polygon& previous,
-                                                        double min_similarity, double tolerance,
-                                                        const KnownSegmentDistances* known) {
-  return chooser->choose(
-      candidates_,
-      [&](int index, std::vector<int>* cycle) { *cycle = candidates_[index].vertices; }, graph,
-      previous, min_similarity, tolerance, known);
-}
-
-Polygon GenericCycleStage::polygon(const SegmentGraph& graph, int index) const {
-  return candidate_polygon(graph, candidates_[index]);
+  summaries_.clear();
+  for (const CycleCandidate& c : candidates_)
+    summaries_.push_back({c.gap_length, c.area, c.seed_edge});
 }
 
 }  // namespace scbt

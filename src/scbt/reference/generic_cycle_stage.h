@@ -1,5 +1,5 @@
-// Stages 5-6 the straightforward way, for `scbt bench`'s baseline configuration: BDSP on
-// Boost.Graph (bdsp_generic.h) with every candidate materialised, then the same choice.
+// Stage 5 the straightforward way, for `scbt bench`'s baseline configuration: BDSP on Boost.Graph
+// (bdsp_generic.h) with every candidate materialised; the choice is CycleStage's, as the tracker's.
 #pragma once
 
 #include <vector>
@@ -11,16 +11,14 @@ namespace scbt {
 class GenericCycleStage : public CycleStage {
  public:
   void search(const SegmentGraph& graph, const BdspOptions& options) override;
-  std::optional<BoundaryChoice> choose(StableChooser* chooser, const SegmentGraph& graph,
-                                       const Polygon& previous, double min_similarity,
-                                       double tolerance,
-                                       const KnownSegmentDistances* known) override;
-  int num_candidates() const override { return static_cast<int>(candidates_.size()); }
-  Polygon polygon(const SegmentGraph& graph, int index) const override;
-  double area(int index) const override { return candidates_[index].area; }
+  const std::vector<CandidateSummary>& summaries() const override { return summaries_; }
+  void vertices(int index, std::vector<int>* cycle) const override {
+    *cycle = candidates_[index].vertices;
+  }
 
  private:
   std::vector<CycleCandidate> candidates_;
+  std::vector<CandidateSummary> summaries_;
 };
 
 }  // namespace scbt

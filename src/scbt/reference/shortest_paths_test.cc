@@ -11,6 +11,8 @@
 #include <utility>
 #include <vector>
 
+#include "scbt/graph/random_graphs.h"
+
 namespace scbt {
 namespace {
 
@@ -28,24 +30,9 @@ GraphEdge make_edge(int u, int v, double weight, bool detected) {
 
 // Random multigraph of n vertices and m edges; weights are 0 (detected) or random lengths.
 SegmentGraph random_graph(std::mt19937& rng, int n, int m) {
-  SegmentGraph graph;
-  std::uniform_real_distribution<double> pos(0.0, 100.0), weight(0.0, 50.0);
-  std::uniform_int_distribution<int> vertex(0, n - 1), coin(0, 3);
-  for (int i = 0; i < n; ++i) graph.vertices.emplace_back(pos(rng), pos(rng));
-  for (int i = 0; i < m; ++i) {
-    GraphEdge e;
-    e.u = vertex(rng);
-    do {
-      e.v = vertex(rng);
-    } while (e.v == e.u);
-    e.detected = coin(rng) == 0;
-    e.weight = e.detected ? 0.0 : weight(rng);
-    e.length = e.weight;
-    if (e.detected) graph.detected_edges.push_back(i);
-    graph.edges.push_back(e);
-  }
-  build_adjacency(&graph);
-  return graph;
+  return random_multigraph(rng, n, m, [](std::mt19937& r) {
+    return std::uniform_real_distribution<double>(0.0, 50.0)(r);
+  });
 }
 
 std::vector<double> bellman_ford(const SegmentGraph& graph, int source, int blocked) {
