@@ -1,5 +1,6 @@
 #include "scbt/depth/boundary_3d.h"
 
+#include <cmath>
 #include <limits>
 #include <stdexcept>
 
@@ -7,6 +8,7 @@
 #include "scbt/depth/curve_centroid.h"
 #include "scbt/depth/curve_outliers.h"
 #include "scbt/depth/depth_window.h"
+#include "scbt/depth/outline_circle.h"
 #include "scbt/depth/plane_fit.h"
 
 namespace scbt {
@@ -35,6 +37,42 @@ CircleFit fit_rim_circle(const std::vector<Eigen::Vector3d>& curve, const Eigen:
   circle = fit_circle_in_plane(curve, origin, normal);
   circle.found = circle.found && circle.rms <= options.circle_max_relative_rms * circle.radius;
   return circle;
+}
+
+// The depth plane turned to the outline's circle normal nearest it, at the distance its inlier
+// points give, each weighted by 1 / sigma(z)^2 ~ z^-4; false (plane unchanged) when the outline
+// is not an ellipse or its normals are both farther than options.outline_normal_max_angle.
+bool turn_plane_to_outline(const std::vector<Eigen::Vector3d>& rays,
+                           const std::vector<Eigen::Vector3d>& points, const DepthOptions& options,
+                           PlaneFit* plane) {
+  if (!(options.outline_normal_max_angle > 0.0)) return false;
+  const OutlineNormals outline = circle_normals_from_outline(rays);
+  if (!outline.found) return false;
+  const Eigen::Vector3d& normal =
+      outline.normals[0].dot(plane->normal) >= outline.normals[1].dot(plane->normal)
+          ? outline.normals[0]
+          : outline.normals[1];
+  const double cos_limit =
+      std::cos(options.outline_normal_max_angle * 3.14159265358979323846 / 180.0);
+  if (!(normal.dot(plane->normal) >= cos_limit)) return false;
+  double weighted = 0.0, weights = 0.0;
+  for (const Eigen::Vector3d& p : points) {
+    if (!p.allFinite()) continue;
+    const double w = 1.0 / (p.z() * p.z() * p.z() * p.z());
+    weighted += w * normal.dot(p);
+    weights += w;
+  }
+  if (!(weights > 0.0)) return false;
+  plane->normal = normal;
+  plane->offset = weighted / weights;
+  double sum_sq = 0.0;
+  for (const Eigen::Vector3d& p : points) {
+    if (!p.allFinite()) continue;
+    const double distance = normal.dot(p) - plane->offset;
+    sum_sq += distance * distance;
+  }
+  plane->rms = std::sqrt(sum_sq / plane->n_inliers);
+  return true;
 }
 
 }  // namespace
@@ -68,18 +106,28 @@ Boundary3d lift_boundary_to_3d(const Polygon& boundary, const cv::Mat& depth,
     if (z[i] > 0.0) result.points[i] = z[i] * pixel_ray(camera, surfaces[i].pixel);
   }
 
-  const PlaneFit plane = fit_plane_robust(result.points, options);
+  PlaneFit plane = fit_plane_robust(result.points, options);
   result.curve.assign(n, kNan);
   if (!plane.found) return result;
   for (std::size_t i = 0; i < n; ++i)
     if (!plane.inlier[i]) result.points[i] = kNan;
   result.n_valid = plane.n_inliers;
+  for (std::size_t i = 0; i < n; ++i) intersect_ray_with_plane(plane, rays[i], &result.curve[i]);
+  result.centroid = closed_curve_centroid(result.curve);
+  // A rim that is roughly circular by the algebraic fit (fit_rim_circle's screen) takes its
+  // normal from the outline before the circle is fitted.
+  const CircleFit screen = fit_circle_in_plane(result.curve, result.centroid, plane.normal, 0);
+  const bool roughly_circular =
+      screen.found && screen.rms <= 2.0 * options.circle_max_relative_rms * screen.radius;
+  if (roughly_circular && turn_plane_to_outline(rays, result.points, options, &plane)) {
+    for (std::size_t i = 0; i < n; ++i) intersect_ray_with_plane(plane, rays[i], &result.curve[i]);
+    result.centroid = closed_curve_centroid(result.curve);
+  }
+  if (roughly_circular)
+    result.circle = fit_rim_circle(result.curve, result.centroid, plane.normal, options);
   result.normal = plane.normal;
   result.plane_offset = plane.offset;
   result.rms = plane.rms;
-  for (std::size_t i = 0; i < n; ++i) intersect_ray_with_plane(plane, rays[i], &result.curve[i]);
-  result.centroid = closed_curve_centroid(result.curve);
-  result.circle = fit_rim_circle(result.curve, result.centroid, plane.normal, options);
   result.valid = result.n_valid >= options.min_valid_points &&
                  result.n_valid >= options.min_valid_fraction * static_cast<double>(n) &&
                  result.centroid.allFinite();

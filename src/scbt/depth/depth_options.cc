@@ -36,6 +36,9 @@ void DepthOptions::check() const {
       std::isfinite(min_valid_fraction) && min_valid_fraction >= 0.0 && min_valid_fraction <= 1.0,
       "min_valid_fraction must be in [0, 1]");
   require(positive(circle_max_relative_rms), "circle_max_relative_rms must be positive");
+  require(std::isfinite(outline_normal_max_angle) && outline_normal_max_angle >= 0.0 &&
+              outline_normal_max_angle <= 90.0,
+          "outline_normal_max_angle must be in [0, 90] degrees");
 }
 
 }  // namespace scbt

@@ -34,6 +34,11 @@ struct DepthOptions {
 
   // A circle is reported when its RMS distance to the rim is at most this share of its radius.
   double circle_max_relative_rms = 0.03;
+  // For such a rim the plane's normal is taken from the outline's ellipse (outline_circle.h)
+  // when it is within this angle (degrees) of the depth plane's normal: depth picks one of the
+  // ellipse's two solutions, and a larger disagreement means the outline is not a circle's
+  // image. 0: the depth plane's normal is kept.
+  double outline_normal_max_angle = 10.0;
 
   // Throws std::invalid_argument naming the first bad value.
   void check() const;
