@@ -10,6 +10,7 @@
 #include <stdexcept>
 #include <thread>
 
+#include "scbt/app/sequence_runner.h"
 #include "scbt/eval/alignment_error.h"
 #include "scbt/geometry/polygon_io.h"
 #include "scbt/io/atomic_file.h"
@@ -118,16 +119,23 @@ cv::Size first_frame_size(const std::string& frames) {
   return frame.size();
 }
 
-// The frames a run shows the tracker: every stride-th frame, without the gap's dropped ones.
-class ShownFrames {
+// The frames a run shows the tracker: every stride-th frame, without the gap's dropped ones, up
+// to max_frames of the sequence (0: all).
+class ShownFrames : public FrameSource {
  public:
-  ShownFrames(const std::string& frames, const Perturbation& perturbation, const SequenceGap& gap)
-      : source_(open_frame_source(frames)), perturbation_(perturbation), gap_(gap) {}
+  ShownFrames(const std::string& frames, const Perturbation& perturbation, const SequenceGap& gap,
+              int max_frames)
+      : source_(open_frame_source(frames)),
+        perturbation_(perturbation),
+        gap_(gap),
+        max_frames_(max_frames) {}
 
   // Reads the next frame shown (skipping stride - 1 frames after the first, and dropped frames),
   // greys it in a grey gap and degrades it into `shown`.
-  bool read(cv::Mat* shown) {
-    for (int skip = number_ == 0 ? 0 : perturbation_.frame_stride() - 1; skip > 0; --skip) {
+  bool read(cv::Mat* shown) override {
+    const int stride = perturbation_.frame_stride();
+    if (number_ > 0 && max_frames_ > 0 && number_ + stride > max_frames_) return false;
+    for (int skip = number_ == 0 ? 0 : stride - 1; skip > 0; --skip) {
       if (!source_->read(&frame_)) return false;
       ++number_;
     }
@@ -139,15 +147,17 @@ class ShownFrames {
     perturbation_.apply(frame_, number_, shown);
     return true;
   }
-  int number() const { return number_; }  // 1-based in the sequence, of the last frame read
-  cv::Size size() const { return frame_.size(); }
+  int frame_count() const override { return -1; }
+  std::string current_name() const override { return source_->current_name(); }
+  cv::Size size() const { return frame_.size(); }  // of the last frame read, before degrading
 
  private:
   std::unique_ptr<FrameSource> source_;
   const Perturbation& perturbation_;
   const SequenceGap& gap_;
+  int max_frames_;
   cv::Mat frame_;
-  int number_ = 0;
+  int number_ = 0;  // 1-based in the sequence, of the last frame read
 };
 
 // The frame numbers (1-based) scored: those shown, within the ground truth.
@@ -219,6 +229,51 @@ void score_run(const std::vector<std::string>& lines, const std::vector<TrackedL
   }
 }
 
+// A tracker job's results file and what is scored and timed: the initial line is the ground
+// truth's (untimed), every other line the boundary scaled back to the sequence's frames. Lines
+// are kept to be scored exactly as written, so a later `--results` run agrees. The file is
+// opened on the initial frame, once the tracker took the initial polygon.
+class EvalTrackWriter : public FrameWriter {
+ public:
+  EvalTrackWriter(std::string path, const Polygon& first_truth, double scale, Progress* progress)
+      : path_(std::move(path)), first_truth_(first_truth), scale_(scale), progress_(progress) {}
+
+  void write(const TrackedFrame& f) override {
+    if (f.initial) {
+      fs::create_directories(fs::path(path_).parent_path());
+      results_ = std::make_unique<AtomicFile>(path_);
+      lines.push_back(format_polygon_line(first_truth_));
+      tracked.resize(1);
+    } else {
+      const TrackResult& r = *f.result;
+      lines.push_back(format_polygon_line(scale_polygon_from_frame(r.boundary, scale_)));
+      TrackedLine line{FrameRecord{}, r.confidence, r.state == TrackState::kTracking};
+      add_timing(r, f.wall_ms, &timing, &line.stats);
+      tracked.push_back(line);
+      if (f.wall_ms > 0.0) {
+        fps_sum += 1000.0 / f.wall_ms;
+        ++fps_frames;
+      }
+    }
+    results_->stream() << lines.back() << '\n';
+    progress_->frames_done += 1;
+  }
+  void commit() override { results_->commit(); }
+
+  std::vector<std::string> lines;
+  std::vector<TrackedLine> tracked;  // frame 1: initial, untimed
+  TimingStats timing;
+  double fps_sum = 0.0;
+  int fps_frames = 0;
+
+ private:
+  std::string path_;
+  const Polygon& first_truth_;
+  double scale_;
+  Progress* progress_;
+  std::unique_ptr<AtomicFile> results_;
+};
+
 void run_tracker_job(const EvalJob& job, const EvalRunOptions& options, Progress* progress,
                      EvalJobOutcome* outcome) {
   const EvalSequence& seq = *job.sequence;
@@ -226,53 +281,31 @@ void run_tracker_job(const EvalJob& job, const EvalRunOptions& options, Progress
   const Perturbation& perturbation = options.perturbation;
   const double scale = perturbation.scale();
   outcome->gap = sequence_gap(options, static_cast<int>(seq.truth.size()));
-  ShownFrames source(seq.files.frames, perturbation, outcome->gap);
-  cv::Mat shown;
-  if (!source.read(&shown)) throw std::runtime_error(seq.files.frames + ": no frames");
+  ShownFrames source(seq.files.frames, perturbation, outcome->gap, options.max_frames);
+  std::unique_ptr<PolygonTracker> tracker = make_polygon_tracker(job.tracker, options.tracker);
+  EvalTrackWriter writer(
+      results_path((fs::path(options.out) / job.tracker).string(), seq.files.name),
+      seq.truth.front(), scale, progress);
+  SequenceRunner runner(tracker.get(), &source, {&writer});
+  const cv::Mat& shown = runner.read_first(seq.files.frames);
   const cv::Size canvas = source.size();
+  const Polygon initial =
+      clamp_to_frame(scale_polygon_to_frame(seq.truth.front(), scale), shown.size());
+  try {
+    tracker->init(shown, initial);
+  } catch (const std::invalid_argument& e) {
+    throw std::invalid_argument(what + ": initial polygon (ground truth line 1): " + e.what());
+  }
+  runner.write_initial(initial);
+  runner.run();
+  outcome->timing = writer.timing;
+  outcome->timing.has_timing = true;
+  finish_timing(writer.fps_sum, writer.fps_frames, &outcome->timing);
   const std::vector<int> numbers =
       scored_numbers(static_cast<int>(seq.truth.size()), perturbation.frame_stride(), outcome->gap);
   std::vector<Polygon> truth;
   for (int n : numbers) truth.push_back(seq.truth[n - 1]);
-  std::unique_ptr<PolygonTracker> tracker = make_polygon_tracker(job.tracker, options.tracker);
-  try {
-    tracker->init(shown,
-                  clamp_to_frame(scale_polygon_to_frame(seq.truth.front(), scale), shown.size()));
-  } catch (const std::invalid_argument& e) {
-    throw std::invalid_argument(what + ": initial polygon (ground truth line 1): " + e.what());
-  }
-  const std::string path =
-      results_path((fs::path(options.out) / job.tracker).string(), seq.files.name);
-  fs::create_directories(fs::path(path).parent_path());
-  AtomicFile results(path);
-  // Lines are kept to be scored exactly as written, so a later `--results` run agrees.
-  std::vector<std::string> lines = {format_polygon_line(seq.truth.front())};
-  results.stream() << lines.back() << '\n';
-  progress->frames_done += 1;
-  std::vector<TrackedLine> tracked(1);  // frame 1: initial, untimed
-  double fps_sum = 0.0;
-  int fps_frames = 0;
-  while ((options.max_frames <= 0 ||
-          source.number() + perturbation.frame_stride() <= options.max_frames) &&
-         source.read(&shown)) {
-    const EvalClock::time_point start = EvalClock::now();
-    const TrackResult r = tracker->track(shown);
-    const double ms = 1000.0 * seconds_since(start);
-    lines.push_back(format_polygon_line(scale_polygon_from_frame(r.boundary, scale)));
-    results.stream() << lines.back() << '\n';
-    TrackedLine line{FrameRecord{}, r.confidence, r.state == TrackState::kTracking};
-    add_timing(r, ms, &outcome->timing, &line.stats);
-    tracked.push_back(line);
-    if (ms > 0.0) {
-      fps_sum += 1000.0 / ms;
-      ++fps_frames;
-    }
-    progress->frames_done += 1;
-  }
-  results.commit();
-  outcome->timing.has_timing = true;
-  finish_timing(fps_sum, fps_frames, &outcome->timing);
-  score_run(lines, tracked, numbers, truth, canvas, what, outcome);
+  score_run(writer.lines, writer.tracked, numbers, truth, canvas, what, outcome);
 }
 
 void run_score_job(const EvalJob& job, const EvalRunOptions& options, Progress* progress,

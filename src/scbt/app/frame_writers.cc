@@ -139,7 +139,8 @@ void InputVideoWriter::write(const TrackedFrame& frame) {
 }
 
 void ProgressWriter::write(const TrackedFrame& frame) {
-  frames_ = frame.number;
+  if (first_frame_ == 0) first_frame_ = frame.number;
+  frames_ = frame.number - first_frame_ + 1;
   if (frames_ % every_ == 0) bar_.update(frames_);
 }
 

@@ -88,7 +88,8 @@ class InputVideoWriter : public FrameWriter {
   int last_frame_ = 0;
 };
 
-// Advances a progress bar every `every` frames; finish() draws the final count.
+// Advances a progress bar every `every` frames, counted from the first frame written (a start
+// frame); finish() draws the final count.
 class ProgressWriter : public FrameWriter {
  public:
   ProgressWriter(std::ostream& log, const std::string& label, int total, bool enabled,
@@ -100,6 +101,7 @@ class ProgressWriter : public FrameWriter {
  private:
   ProgressBar bar_;
   int every_;
+  int first_frame_ = 0;
   int frames_ = 0;
 };
 

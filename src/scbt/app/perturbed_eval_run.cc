@@ -94,8 +94,103 @@ void write_tables(const PerturbedEvalSummary& summary, const std::string& out,
   files->push_back(csv.path());
 }
 
-// One panel per kind of perturbation: pooled success at 10 px (y, 0..1) against its level (x),
-// a polyline and dots per tracker; the unperturbed run, when given, is drawn as a dashed level.
+// Pooled success at 10 px of `tracker` in `run` (a single sequence's when there is no pooled
+// row), or -1 when the run has none.
+double pooled_s10(const PerturbedEvalRun& run, const std::string& tracker,
+                  const std::vector<std::string>& sequences) {
+  const SequenceScore* s = find_score(run.summary, tracker, kAllSequences);
+  if (s == nullptr && sequences.size() == 1) s = find_score(run.summary, tracker, sequences[0]);
+  return s == nullptr ? -1.0 : s->errors.success_10;
+}
+
+// Where a (level, success) pair falls in a plot spanning levels lo..hi and success 0..1.
+struct LevelAxes {
+  cv::Rect plot;
+  double lo, hi;
+  cv::Point to_px(double level, double s) const {
+    return cv::Point(plot.x + static_cast<int>((level - lo) / (hi - lo) * plot.width),
+                     plot.y + static_cast<int>((1.0 - s) * plot.height));
+  }
+};
+
+// The frame, grid, titles and level labels of one kind's panel.
+void draw_level_axes(const LevelAxes& axes, const cv::Rect& panel, const std::string& kind,
+                     const std::vector<const PerturbedEvalRun*>& runs, cv::Mat* image) {
+  const cv::Scalar ink(40, 40, 40), grid(220, 220, 220);
+  const cv::Rect& plot = axes.plot;
+  for (int i = 0; i <= 4; ++i) {
+    const int y = plot.y + plot.height * i / 4;
+    cv::line(*image, {plot.x, y}, {plot.x + plot.width, y}, grid, 1);
+    char label[16];
+    std::snprintf(label, sizeof(label), "%.2f", 1.0 - 0.25 * i);
+    cv::putText(*image, label, {panel.x + 8, y + 4}, cv::FONT_HERSHEY_SIMPLEX, 0.4, ink, 1,
+                cv::LINE_AA);
+  }
+  cv::rectangle(*image, plot, ink, 1);
+  cv::putText(*image, kind + " level", {plot.x + plot.width / 2 - 40, panel.y + panel.height - 12},
+              cv::FONT_HERSHEY_SIMPLEX, 0.45, ink, 1, cv::LINE_AA);
+  cv::putText(*image, "pooled success@10 under " + kind, {panel.x + 10, panel.y + 18},
+              cv::FONT_HERSHEY_SIMPLEX, 0.45, ink, 1, cv::LINE_AA);
+  for (const PerturbedEvalRun* run : runs) {
+    char label[32];
+    std::snprintf(label, sizeof(label), "%g", run->perturbation.level);
+    const cv::Point at = axes.to_px(run->perturbation.level, 0.0);
+    cv::putText(*image, label, {at.x - 8, at.y + 16}, cv::FONT_HERSHEY_SIMPLEX, 0.4, ink, 1,
+                cv::LINE_AA);
+  }
+}
+
+// One kind's panel: a polyline and dots per tracker over the levels, the unperturbed run (when
+// given) as a dashed level.
+void draw_level_panel(const PerturbedEvalSummary& summary, const std::string& kind,
+                      const std::vector<std::string>& trackers,
+                      const std::vector<std::string>& sequences, const cv::Rect& panel,
+                      cv::Mat* image) {
+  std::vector<const PerturbedEvalRun*> runs;
+  LevelAxes axes{cv::Rect(panel.x + 50, panel.y + 30, panel.width - 70, panel.height - 75), 1e300,
+                 -1e300};
+  for (const PerturbedEvalRun& run : summary.runs) {
+    if (kind_of(run.perturbation) != kind) continue;
+    runs.push_back(&run);
+    axes.lo = std::min(axes.lo, run.perturbation.level);
+    axes.hi = std::max(axes.hi, run.perturbation.level);
+  }
+  std::sort(runs.begin(), runs.end(), [](const PerturbedEvalRun* a, const PerturbedEvalRun* b) {
+    return a->perturbation.level < b->perturbation.level;
+  });
+  if (!(axes.hi > axes.lo)) {
+    axes.lo -= 1;
+    axes.hi += 1;
+  }
+  draw_level_axes(axes, panel, kind, runs, image);
+  const cv::Rect& plot = axes.plot;
+  for (size_t t = 0; t < trackers.size(); ++t) {
+    const cv::Scalar colour = plot_colour(t);
+    for (const PerturbedEvalRun& run : summary.runs) {
+      const double s =
+          kind_of(run.perturbation) == "none" ? pooled_s10(run, trackers[t], sequences) : -1.0;
+      if (s < 0) continue;
+      const int y = axes.to_px(axes.lo, s).y;
+      for (int x = plot.x; x < plot.x + plot.width; x += 12) {
+        cv::line(*image, {x, y}, {std::min(x + 6, plot.x + plot.width), y}, colour, 1);
+      }
+    }
+    cv::Point previous(-1, -1);
+    for (const PerturbedEvalRun* run : runs) {
+      const double s = pooled_s10(*run, trackers[t], sequences);
+      if (s < 0) continue;
+      const cv::Point p = axes.to_px(run->perturbation.level, s);
+      if (previous.x >= 0) cv::line(*image, previous, p, colour, 2, cv::LINE_AA);
+      cv::circle(*image, p, 4, colour, cv::FILLED, cv::LINE_AA);
+      previous = p;
+    }
+    cv::putText(*image, trackers[t],
+                {plot.x + 8, plot.y + plot.height - 10 - 16 * static_cast<int>(t)},
+                cv::FONT_HERSHEY_SIMPLEX, 0.45, colour, 1, cv::LINE_AA);
+  }
+}
+
+// One panel per kind of perturbation: pooled success at 10 px (y, 0..1) against its level (x).
 cv::Mat render_levels(const PerturbedEvalSummary& summary) {
   std::vector<std::string> kinds, trackers, sequences;
   for (const PerturbedEvalRun& run : summary.runs) {
@@ -105,82 +200,13 @@ cv::Mat render_levels(const PerturbedEvalSummary& summary) {
       kinds.push_back(kind);
     }
   }
-  const auto pooled_s10 = [&](const PerturbedEvalRun& run, const std::string& tracker) {
-    const SequenceScore* s = find_score(run.summary, tracker, kAllSequences);
-    if (s == nullptr && sequences.size() == 1) s = find_score(run.summary, tracker, sequences[0]);
-    return s == nullptr ? -1.0 : s->errors.success_10;
-  };
   if (kinds.empty()) kinds.push_back("none");
   const int pw = 360, ph = 280, columns = std::min<int>(4, static_cast<int>(kinds.size()));
   const int rows = (static_cast<int>(kinds.size()) + columns - 1) / columns;
   cv::Mat image(rows * ph, columns * pw, CV_8UC3, cv::Scalar(255, 255, 255));
-  const cv::Scalar ink(40, 40, 40), grid(220, 220, 220);
   for (size_t k = 0; k < kinds.size(); ++k) {
     const cv::Rect panel((k % columns) * pw, (k / columns) * ph, pw, ph);
-    const cv::Rect plot(panel.x + 50, panel.y + 30, pw - 70, ph - 75);
-    std::vector<const PerturbedEvalRun*> runs;
-    double lo = 1e300, hi = -1e300;
-    for (const PerturbedEvalRun& run : summary.runs) {
-      if (kind_of(run.perturbation) != kinds[k]) continue;
-      runs.push_back(&run);
-      lo = std::min(lo, run.perturbation.level);
-      hi = std::max(hi, run.perturbation.level);
-    }
-    std::sort(runs.begin(), runs.end(), [](const PerturbedEvalRun* a, const PerturbedEvalRun* b) {
-      return a->perturbation.level < b->perturbation.level;
-    });
-    if (!(hi > lo)) {
-      lo -= 1;
-      hi += 1;
-    }
-    const auto to_px = [&](double level, double s) {
-      return cv::Point(plot.x + static_cast<int>((level - lo) / (hi - lo) * plot.width),
-                       plot.y + static_cast<int>((1.0 - s) * plot.height));
-    };
-    for (int i = 0; i <= 4; ++i) {
-      const int y = plot.y + plot.height * i / 4;
-      cv::line(image, {plot.x, y}, {plot.x + plot.width, y}, grid, 1);
-      char label[16];
-      std::snprintf(label, sizeof(label), "%.2f", 1.0 - 0.25 * i);
-      cv::putText(image, label, {panel.x + 8, y + 4}, cv::FONT_HERSHEY_SIMPLEX, 0.4, ink, 1,
-                  cv::LINE_AA);
-    }
-    cv::rectangle(image, plot, ink, 1);
-    cv::putText(image, kinds[k] + " level", {plot.x + plot.width / 2 - 40, panel.y + ph - 12},
-                cv::FONT_HERSHEY_SIMPLEX, 0.45, ink, 1, cv::LINE_AA);
-    cv::putText(image, "pooled success@10 under " + kinds[k], {panel.x + 10, panel.y + 18},
-                cv::FONT_HERSHEY_SIMPLEX, 0.45, ink, 1, cv::LINE_AA);
-    for (const PerturbedEvalRun* run : runs) {
-      char label[32];
-      std::snprintf(label, sizeof(label), "%g", run->perturbation.level);
-      const cv::Point at = to_px(run->perturbation.level, 0.0);
-      cv::putText(image, label, {at.x - 8, at.y + 16}, cv::FONT_HERSHEY_SIMPLEX, 0.4, ink, 1,
-                  cv::LINE_AA);
-    }
-    for (size_t t = 0; t < trackers.size(); ++t) {
-      const cv::Scalar colour = plot_colour(t);
-      for (const PerturbedEvalRun& run : summary.runs) {
-        if (kind_of(run.perturbation) != "none") continue;
-        const double s = pooled_s10(run, trackers[t]);
-        if (s < 0) continue;
-        const int y = to_px(lo, s).y;
-        for (int x = plot.x; x < plot.x + plot.width; x += 12) {
-          cv::line(image, {x, y}, {std::min(x + 6, plot.x + plot.width), y}, colour, 1);
-        }
-      }
-      cv::Point previous(-1, -1);
-      for (const PerturbedEvalRun* run : runs) {
-        const double s = pooled_s10(*run, trackers[t]);
-        if (s < 0) continue;
-        const cv::Point p = to_px(run->perturbation.level, s);
-        if (previous.x >= 0) cv::line(image, previous, p, colour, 2, cv::LINE_AA);
-        cv::circle(image, p, 4, colour, cv::FILLED, cv::LINE_AA);
-        previous = p;
-      }
-      cv::putText(image, trackers[t],
-                  {plot.x + 8, plot.y + plot.height - 10 - 16 * static_cast<int>(t)},
-                  cv::FONT_HERSHEY_SIMPLEX, 0.45, colour, 1, cv::LINE_AA);
-    }
+    draw_level_panel(summary, kinds[k], trackers, sequences, panel, &image);
   }
   return image;
 }

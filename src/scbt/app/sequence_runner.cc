@@ -34,6 +34,7 @@ void RunStatistics::write(const TrackedFrame& frame) {
   const TrackResult& r = *frame.result;
   ++tracked;
   held += r.held ? 1 : 0;
+  lost += r.state == TrackState::kLost ? 1 : 0;
   line_ms += r.line_ms;
   grouping_ms += r.grouping_ms;
   total_ms += r.total_ms();
@@ -51,18 +52,42 @@ SequenceRunner::SequenceRunner(PolygonTracker* tracker, FrameSource* source,
 }
 
 const cv::Mat& SequenceRunner::read_first(const std::string& input) {
-  if (!source_->read(&frame_)) throw std::runtime_error(input + ": no frames");
+  const int start = options_.start_frame;
+  const int count = source_->frame_count();
+  const auto beyond = [&](int frames) {
+    return std::invalid_argument("--start-frame " + std::to_string(start) +
+                                 " is beyond the input: " + input + " has " +
+                                 std::to_string(frames) + " frame(s)");
+  };
+  if (count > 0 && start > count) throw beyond(count);
+  for (int skipped = 0; skipped < start - 1; ++skipped) {
+    try {
+      if (!source_->read(&frame_)) throw beyond(skipped);
+    } catch (const std::runtime_error&) {
+      // undecodable, but not tracked
+    }
+  }
+  if (!source_->read(&frame_)) {
+    if (start > 1) throw beyond(start - 1);
+    throw std::runtime_error(input + ": no frames");
+  }
   frames_ = 1;
   return frame_;
 }
 
 void SequenceRunner::start(const Polygon& polygon) {
   tracker_->init(frame_, polygon);
+  write_initial(polygon);
+}
+
+void SequenceRunner::write_initial(const Polygon& boundary) {
   TrackResult initial;
-  initial.boundary = polygon;
-  boundary_ = polygon;
+  initial.boundary = boundary;
+  initial.confidence = 1.0;  // the boundary is given
+  boundary_ = boundary;
+  state_ = TrackState::kTracking;
   TrackedFrame f;
-  f.number = frames_;
+  f.number = number();
   f.image = &frame_;
   f.result = &initial;
   f.initial = true;
@@ -71,7 +96,7 @@ void SequenceRunner::start(const Polygon& polygon) {
 
 bool SequenceRunner::step() {
   if (options_.max_frames > 0 && frames_ >= options_.max_frames) return false;
-  if (options_.stop != nullptr && *options_.stop != 0) return false;
+  if (options_.stop && options_.stop()) return false;
   // A frame that cannot be decoded or does not fit (size, pixel format) is bad.
   TrackedFrame f;
   TrackResult r;
@@ -94,14 +119,18 @@ bool SequenceRunner::step() {
   ++frames_;
   if (!f.bad.empty()) {
     if (options_.on_bad_frame == BadFramePolicy::kStop) {
-      throw std::runtime_error(f.bad + " (frame " + std::to_string(frames_) +
+      throw std::runtime_error(f.bad + " (frame " + std::to_string(number()) +
                                "; --on-bad-frame=stop)");
     }
+    // The tracker did not see the frame: no confidence, and a lost object stays lost.
     r = TrackResult();
     r.boundary = boundary_;
     r.held = true;
+    r.state = state_ == TrackState::kLost ? TrackState::kLost : TrackState::kUncertain;
+  } else {
+    state_ = r.state;
   }
-  f.number = frames_;
+  f.number = number();
   f.image = &frame_;
   f.result = &r;
   write(f);

@@ -6,14 +6,14 @@
 //   RunStatistics stats;
 //   SequenceRunner runner(&tracker, source.get(), {&results, optional_csv.get(), &stats}, options);
 //   runner.read_first(input);
-//   runner.start(initial_polygon);
+//   runner.start(initial_polygon);  // or the caller's own init, then write_initial(boundary)
 //   runner.run();  // step() per frame, then commit() every writer
 //
 // A writer that needs more than TrackedFrame (the tracker's debug data, depth) holds a pointer to
-// that source itself, as AnnotationWriter does.
+// that source itself, as AnnotationWriter and TrackOutputs (track_outputs.h) do.
 #pragma once
 
-#include <csignal>
+#include <functional>
 #include <opencv2/core/mat.hpp>
 #include <string>
 #include <vector>
@@ -61,6 +61,7 @@ class RunStatistics : public FrameWriter {
   int frames = 0;   // frames written, the initial one and bad ones included
   int tracked = 0;  // frames the tracker tracked
   int held = 0;     // of those, frames where it held the previous boundary
+  int lost = 0;     // of those, frames in state `lost` (counted in `held` too)
   int bad = 0;      // bad frames held (BadFramePolicy::kHold)
   double line_ms = 0.0, grouping_ms = 0.0, total_ms = 0.0;  // sums over tracked frames
   double wall_ms = 0.0;                                     // sum of TrackedFrame::wall_ms
@@ -72,11 +73,14 @@ class RunStatistics : public FrameWriter {
 };
 
 struct SequenceRunOptions {
-  int max_frames = 0;  // stop after this many frames, the initial one included (0: all)
+  // The first frame tracked, 1-based in the input: read_first() skips the frames before it (one
+  // that cannot be decoded is no error: it is not tracked). Frame numbers stay the input's.
+  int start_frame = 1;
+  int max_frames = 0;  // stop after this many frames from the start frame, the initial one included
   BadFramePolicy on_bad_frame = BadFramePolicy::kRaise;
   bool measure_cpu = false;  // fill TrackedFrame::cpu_ms
-  // When set and non-zero, the run stops before the next frame (a signal handler's flag).
-  const volatile std::sig_atomic_t* stop = nullptr;
+  // Asked before each frame; true stops the run there (a signal handler's flag, a reader gone).
+  std::function<bool()> stop;
 };
 
 class SequenceRunner {
@@ -86,11 +90,15 @@ class SequenceRunner {
   SequenceRunner(PolygonTracker* tracker, FrameSource* source, std::vector<FrameWriter*> writers,
                  const SequenceRunOptions& options = {});
 
-  // Reads the first frame; throws std::runtime_error naming `input` when there is none.
+  // Reads the start frame; throws std::runtime_error naming `input` when there is none, or
+  // std::invalid_argument when the input ends before the start frame.
   const cv::Mat& read_first(const std::string& input);
   // (Re-)initialises the tracker on the current frame and writes it as an initial frame.
   // Throws what the tracker's init throws.
   void start(const Polygon& polygon);
+  // Writes the current frame as an initial frame with `boundary`, for a tracker the caller has
+  // initialised on it in its own way (Tracker::init_from_box).
+  void write_initial(const Polygon& boundary);
   // Reads, tracks and writes the next frame; false (nothing written) at the end of the input,
   // at max_frames or when stopped.
   bool step();
@@ -98,11 +106,12 @@ class SequenceRunner {
   void run();
   void commit();
 
-  int frames() const { return frames_; }  // frames read so far
+  int frames() const { return frames_; }  // frames read so far from the start frame on
   const cv::Mat& frame() const { return frame_; }
 
  private:
   void write(const TrackedFrame& frame);
+  int number() const { return options_.start_frame - 1 + frames_; }  // of the current frame
 
   PolygonTracker* tracker_;
   FrameSource* source_;
@@ -110,7 +119,8 @@ class SequenceRunner {
   SequenceRunOptions options_;
   cv::Mat frame_, next_;
   int frames_ = 0;
-  Polygon boundary_;  // the last boundary written, held on a bad frame
+  Polygon boundary_;                          // the last boundary written, held on a bad frame
+  TrackState state_ = TrackState::kTracking;  // of the last frame tracked
 };
 
 }  // namespace scbt

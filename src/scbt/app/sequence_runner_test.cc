@@ -56,11 +56,13 @@ class Recorder : public FrameWriter {
     initial.push_back(f.initial);
     bad.push_back(!f.bad.empty());
     first_x.push_back(f.result->boundary.front().x);
+    states.push_back(f.result->state);
   }
   void commit() override { ++commits; }
   std::vector<int> numbers;
   std::vector<bool> initial, bad;
   std::vector<double> first_x;
+  std::vector<TrackState> states;
   int commits = 0;
 };
 
@@ -117,6 +119,39 @@ TEST(SequenceRunner, HoldKeepsTheBoundaryOverBadFrames) {
   EXPECT_EQ(record.first_x, (std::vector<double>{10, 11, 11, 11, 12}));
   EXPECT_EQ(stats.bad, 2);
   EXPECT_EQ(stats.tracked, 2);
+  EXPECT_EQ(record.states[2], TrackState::kUncertain);  // not seen by the tracker
+}
+
+TEST(SequenceRunner, StartFrameSkipsAndNumbersByTheInput) {
+  // Frame 2 (skipped) cannot be decoded: no error, it is not tracked.
+  ListSource source({frame(), cv::Mat(), frame(), frame(), frame()});
+  ShiftTracker tracker;
+  Recorder record;
+  SequenceRunOptions options;
+  options.start_frame = 3;
+  options.max_frames = 2;  // counted from the start frame
+  SequenceRunner runner(&tracker, &source, {&record}, options);
+  runner.read_first("list");
+  runner.start(kSquare);
+  runner.run();
+  EXPECT_EQ(record.numbers, (std::vector<int>{3, 4}));
+  EXPECT_EQ(runner.frames(), 2);
+}
+
+TEST(SequenceRunner, StartFrameBeyondTheInputNamesBoth) {
+  ListSource source({frame(), frame()});
+  ShiftTracker tracker;
+  SequenceRunOptions options;
+  options.start_frame = 3;
+  SequenceRunner runner(&tracker, &source, {}, options);
+  try {
+    runner.read_first("list");
+    FAIL() << "no exception";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("--start-frame 3 is beyond the input: list has 2"),
+              std::string::npos)
+        << e.what();
+  }
 }
 
 TEST(SequenceRunner, StopPolicyNamesTheFrameAndCommitsNothing) {
@@ -150,17 +185,17 @@ TEST(SequenceRunner, StopsAtMaxFramesAndOnTheStopFlag) {
   ListSource source({frame(), frame(), frame(), frame(), frame()});
   ShiftTracker tracker;
   Recorder record;
-  volatile std::sig_atomic_t stop = 0;
+  bool stop = false;
   SequenceRunOptions options;
   options.max_frames = 4;
-  options.stop = &stop;
+  options.stop = [&stop] { return stop; };
   SequenceRunner runner(&tracker, &source, {&record}, options);
   runner.read_first("list");
   runner.start(kSquare);
   EXPECT_TRUE(runner.step());
-  stop = 1;
+  stop = true;
   EXPECT_FALSE(runner.step());
-  stop = 0;
+  stop = false;
   EXPECT_TRUE(runner.step());
   EXPECT_TRUE(runner.step());
   EXPECT_FALSE(runner.step());  // max_frames counts the initial frame

@@ -1,110 +1,18 @@
 #include "scbt/app/track_run.h"
 
-#include <signal.h>
-
 #include <csignal>
-#include <cstring>
-#include <filesystem>
 #include <memory>
-#include <opencv2/imgcodecs.hpp>
-#include <opencv2/videoio.hpp>
-#include <sstream>
 #include <stdexcept>
 
 #include "scbt/app/frame_writers.h"
-#include "scbt/app/progress.h"
+#include "scbt/app/stop_signal.h"
+#include "scbt/app/track_outputs.h"
 #include "scbt/geometry/polygon_io.h"
 #include "scbt/io/frame_source.h"
-#include "scbt/io/output_set.h"
 #include "scbt/io/same_file.h"
-#include "scbt/render/annotate.h"
+#include "scbt/peers/polygon_tracker.h"
 
 namespace scbt {
-namespace fs = std::filesystem;
-namespace {
-
-// Set by the handler; read once per frame by the tracking loop.
-volatile std::sig_atomic_t g_stop_signal = 0;
-
-extern "C" void on_stop_signal(int signal_number) { g_stop_signal = signal_number; }
-
-// Installs on_stop_signal for SIGINT, SIGTERM and SIGHUP (a closed terminal) for its lifetime
-// and ignores SIGPIPE, so that a reader of standard output going away shows as EPIPE
-// (OutputSet::reader_gone) and ends the run cleanly; then restores the old handlers.
-class StopSignalScope {
- public:
-  explicit StopSignalScope(bool enabled) : enabled_(enabled) {
-    g_stop_signal = 0;
-    if (!enabled_) return;
-    struct sigaction action {};
-    action.sa_handler = on_stop_signal;
-    sigemptyset(&action.sa_mask);
-    sigaction(SIGINT, &action, &old_int_);
-    sigaction(SIGTERM, &action, &old_term_);
-    sigaction(SIGHUP, &action, &old_hup_);
-    struct sigaction ignore {};
-    ignore.sa_handler = SIG_IGN;
-    sigemptyset(&ignore.sa_mask);
-    sigaction(SIGPIPE, &ignore, &old_pipe_);
-  }
-  ~StopSignalScope() {
-    if (!enabled_) return;
-    sigaction(SIGINT, &old_int_, nullptr);
-    sigaction(SIGTERM, &old_term_, nullptr);
-    sigaction(SIGHUP, &old_hup_, nullptr);
-    sigaction(SIGPIPE, &old_pipe_, nullptr);
-  }
-  StopSignalScope(const StopSignalScope&) = delete;
-  StopSignalScope& operator=(const StopSignalScope&) = delete;
-
- private:
-  bool enabled_;
-  struct sigaction old_int_ {};
-  struct sigaction old_term_ {};
-  struct sigaction old_hup_ {};
-  struct sigaction old_pipe_ {};
-};
-
-const char* signal_name(int signal_number) {
-  switch (signal_number) {
-    case SIGINT:
-      return "SIGINT";
-    case SIGTERM:
-      return "SIGTERM";
-    case SIGHUP:
-      return "SIGHUP";
-    default:
-      return "a signal";
-  }
-}
-
-void write_csv_header(std::ostream& csv) {
-  csv << "frame,held,state,confidence,cost,area_similarity,detected,kept,vertices,edges,"
-         "candidates,line_ms,grouping_ms,total_ms,note\n";
-}
-
-// The note is free text: quoted, with inner quotes doubled, when it holds a comma or quote.
-std::string csv_field(const std::string& text) {
-  if (text.find_first_of(",\"\n") == std::string::npos) return text;
-  std::string quoted = "\"";
-  for (char c : text) {
-    if (c == '\n') c = ' ';
-    quoted += c;
-    if (c == '"') quoted += '"';
-  }
-  return quoted + '"';
-}
-
-void write_csv_row(std::ostream& csv, int frame, const TrackResult& r, const std::string& note) {
-  char line[256];
-  std::snprintf(line, sizeof(line), "%d,%d,%s,%.4f,%.6g,%.6g,%d,%d,%d,%d,%d,%.4f,%.4f,%.4f,", frame,
-                r.held ? 1 : 0, to_string(r.state).c_str(), r.confidence, r.cost, r.area_similarity,
-                r.num_detected, r.num_kept, r.num_vertices, r.num_edges, r.num_candidates,
-                r.line_ms, r.grouping_ms, r.total_ms());
-  csv << line << csv_field(note) << '\n';
-}
-
-}  // namespace
 
 Polygon load_initial_polygon(const TrackRunOptions& options) {
   const int given = (options.init_file.empty() ? 0 : 1) + (options.init_points.empty() ? 0 : 1) +
@@ -137,29 +45,6 @@ cv::Rect parse_init_box(const std::string& text) {
 }
 
 namespace {
-
-// Reads the frames before `start_frame` (1-based) and the start frame itself into `frame`. A
-// skipped frame that cannot be decoded is not tracked, so it is not an error.
-void read_start_frame(FrameSource* source, const TrackRunOptions& options, cv::Mat* frame) {
-  const int count = source->frame_count();
-  const auto beyond = [&options](int frames) {
-    return std::invalid_argument("--start-frame " + std::to_string(options.start_frame) +
-                                 " is beyond the input: " + options.input + " has " +
-                                 std::to_string(frames) + " frame(s)");
-  };
-  if (count > 0 && options.start_frame > count) throw beyond(count);
-  for (int skipped = 0; skipped < options.start_frame - 1; ++skipped) {
-    try {
-      if (!source->read(frame)) throw beyond(skipped);
-    } catch (const std::runtime_error&) {
-      // undecodable, but not tracked
-    }
-  }
-  if (!source->read(frame)) {
-    if (options.start_frame > 1) throw beyond(options.start_frame - 1);
-    throw std::runtime_error(options.input + ": no frames");
-  }
-}
 
 // Initialises the tracker on the first frame from --init / --init-points (`polygon`) or from
 // --init-box; returns the initial boundary. Errors name where the boundary came from: a file's
@@ -206,115 +91,37 @@ void check_track_options(const TrackRunOptions& options) {
   options.depth.check();
 }
 
-// The caption of an annotated frame: number, state, confidence, time and the chosen cycle.
-std::string frame_caption(int frame_number, const TrackResult& r) {
-  char status[200];
-  std::snprintf(status, sizeof(status), "frame %d  %s%s  conf %.2f  %.2f ms  cost %.4f  sim %.3f",
-                frame_number, to_string(r.state).c_str(), r.reacquired ? " (re-acquired)" : "",
-                r.confidence, r.total_ms(), r.cost, r.area_similarity);
-  return status;
-}
+// A bad frame held (BadFramePolicy::kHold) is reported at once, even when quiet.
+class BadFrameWarnings : public FrameWriter {
+ public:
+  BadFrameWarnings(std::ostream& log, bool quiet) : log_(log), quiet_(quiet) {}
+  void write(const TrackedFrame& frame) override {
+    if (frame.bad.empty()) return;
+    if (!quiet_) log_ << '\n';  // ends the progress bar's line
+    log_ << "scbt: warning: " << printable(frame.bad) << " (frame " << frame.number
+         << "); boundary held\n";
+  }
 
-// The outputs of a run, all opened before the first frame (a folder, a missing folder or a video
-// name without a container fails here); none replaces an old file before commit().
-struct TrackOutputs {
-  OutputSet set;
-  OutputFile* results = nullptr;
-  OutputFile* csv = nullptr;
-  VideoOutput* video = nullptr;
-  FrameFolderOutput* frames_out = nullptr;
-  std::unique_ptr<DepthTrackOutput> depth;
-
-  TrackOutputs(const TrackRunOptions& options, double fps) {
-    results = &set.add_file(options.output);
-    if (!options.csv.empty()) csv = &set.add_file(options.csv);
-    if (!options.video.empty()) video = &set.add_video(options.video, fps);
-    if (!options.frames_out.empty()) frames_out = &set.add_frame_folder(options.frames_out);
-    if (options.depth.enabled()) depth = std::make_unique<DepthTrackOutput>(options.depth, &set);
-  }
-  bool annotate() const { return video != nullptr || frames_out != nullptr; }
-  void annotation(cv::Mat image, int frame_number) {
-    if (depth) depth->draw(&image);
-    if (video) video->write(image);
-    if (frames_out) frames_out->write(frame_number, image);
-  }
-  // The initial frame: its line, 3-D row and image (no CSV row: nothing was tracked).
-  void write_initial(int number, const Polygon& initial, const cv::Mat& frame) {
-    TrackResult first;
-    first.boundary = initial;
-    first.confidence = 1.0;
-    results->stream() << format_polygon_line(initial) << '\n';
-    if (depth) depth->write(number, &first, frame.size());
-    if (annotate()) {
-      annotation(annotate_frame(frame, {}, first,
-                                "frame " + std::to_string(number) + ": initial boundary"),
-                 number);
-    }
-    set.end_record();
-  }
-  // A frame's line, CSV row, 3-D row and image. `debug` is null for a bad frame, which the
-  // tracker did not see: no 3-D and no image then.
-  void write_frame(int number, const TrackResult& r, const cv::Mat& frame, const std::string& note,
-                   const TrackDebug* debug) {
-    results->stream() << format_polygon_line(r.boundary) << '\n';
-    if (csv) write_csv_row(csv->stream(), number, r, note);
-    if (depth) depth->write(number, debug ? &r : nullptr, frame.size());
-    if (annotate() && debug) {
-      annotation(annotate_frame(frame, *debug, r, frame_caption(number, r)), number);
-    }
-    set.end_record();
-  }
+ private:
+  std::ostream& log_;
+  bool quiet_;
 };
 
-// No output may overwrite an input or another output: checked before anything is read or written.
-void check_paths(const TrackRunOptions& options) {
-  std::vector<NamedPath> inputs = {{"INPUT", options.input}};
-  if (!options.init_file.empty()) inputs.push_back({"--init", options.init_file});
-  std::vector<NamedPath> outputs = {{"-o", options.output}};
-  if (!options.csv.empty()) outputs.push_back({"--csv", options.csv});
-  if (!options.video.empty()) outputs.push_back({"--video", options.video});
-  std::vector<NamedPath> output_folders;
-  if (!options.frames_out.empty()) output_folders.push_back({"--frames-out", options.frames_out});
-  add_depth_paths(options.depth, &inputs, &outputs);
-  check_no_overwrite(inputs, outputs, output_folders);
-}
-
-// A bad frame under the hold policy: reported, and the boundary held. The tracker did not see
-// it: no confidence, and a lost object stays lost.
-TrackResult held_bad_frame(const std::string& bad, int number, const Tracker& tracker,
-                           TrackState last_state, const TrackRunOptions& options,
-                           std::ostream& log) {
-  if (options.on_bad_frame == BadFramePolicy::kStop) {
-    throw std::runtime_error(bad + " (frame " + std::to_string(number) + "; --on-bad-frame=stop)");
-  }
-  if (!options.quiet) log << '\n';
-  log << "scbt: warning: " << printable(bad) << " (frame " << number << "); boundary held\n";
-  TrackResult r;
-  r.boundary = tracker.boundary();
-  r.held = true;
-  r.state = last_state == TrackState::kLost ? TrackState::kLost : TrackState::kUncertain;
-  return r;
-}
-
-void add_to_summary(const TrackResult& r, TrackSummary* summary, double* total_ms) {
-  ++summary->tracked;
-  summary->held += r.held ? 1 : 0;
-  summary->lost += r.state == TrackState::kLost ? 1 : 0;
-  summary->mean_line_ms += r.line_ms;
-  summary->mean_grouping_ms += r.grouping_ms;
-  summary->mean_vertices += r.num_vertices;
-  summary->mean_edges += r.num_edges;
-  *total_ms += r.total_ms();
-}
-
-void finish_summary(double total_ms, TrackSummary* summary) {
-  if (summary->tracked == 0) return;
-  const double n = summary->tracked;
-  summary->mean_line_ms /= n;
-  summary->mean_grouping_ms /= n;
-  summary->mean_vertices /= n;
-  summary->mean_edges /= n;
-  summary->fps = total_ms > 0 ? 1000.0 * n / total_ms : 0.0;
+TrackSummary summarise(const RunStatistics& stats, int start_frame, int expected_frames) {
+  TrackSummary summary;
+  summary.frames = stats.frames;
+  summary.start_frame = start_frame;
+  summary.expected_frames = expected_frames;
+  summary.tracked = stats.tracked;
+  summary.held = stats.held;
+  summary.lost = stats.lost;
+  summary.bad_frames = stats.bad;
+  summary.mean_line_ms = stats.mean(stats.line_ms);
+  summary.mean_grouping_ms = stats.mean(stats.grouping_ms);
+  summary.fps = stats.fps();
+  summary.mean_vertices = stats.mean(stats.vertices);
+  summary.mean_edges = stats.mean(stats.edges);
+  return summary;
 }
 
 // The warnings at the end of a run: interrupted, bad frames, frames the input announced but did
@@ -352,60 +159,36 @@ void report_end(const TrackRunOptions& options, std::ostream& log, TrackSummary*
 
 TrackSummary run_track(const TrackRunOptions& options, std::ostream& log) {
   check_track_options(options);
-  check_paths(options);
+  check_track_paths(options);
   const Polygon polygon = options.init_box.empty() ? load_initial_polygon(options) : Polygon{};
-  Tracker tracker(options.tracker);
-  const StopSignalScope signal_scope(options.handle_signals);
+  BdspPolygonTracker bdsp{Tracker(options.tracker)};
+  const StopSignalScope signals(options.handle_signals);
   std::unique_ptr<FrameSource> source = open_colour_source(options.input, options.depth);
-  TrackOutputs out(options, source->fps());
+  TrackOutputs out(options, source->fps(), &bdsp.tracker());
+  const int expected =
+      source->frame_count() > 0 ? source->frame_count() - (options.start_frame - 1) : -1;
 
-  cv::Mat frame;
-  read_start_frame(source.get(), options, &frame);
-  const Polygon initial = initialise(&tracker, frame, polygon, options, source->current_name());
-  tracker.set_keep_debug(out.annotate());
-  if (out.csv) write_csv_header(out.csv->stream());
-  out.write_initial(options.start_frame, initial, frame);
-  TrackSummary summary;
-  summary.frames = 1;
-  summary.start_frame = options.start_frame;
-  if (source->frame_count() > 0) {
-    summary.expected_frames = source->frame_count() - (options.start_frame - 1);
+  BadFrameWarnings warnings(log, options.quiet);
+  RunStatistics stats;
+  ProgressWriter progress(log, "tracking", expected, !options.quiet);
+  SequenceRunOptions run_options;
+  run_options.start_frame = options.start_frame;
+  run_options.max_frames = options.max_frames;
+  run_options.on_bad_frame = options.on_bad_frame;
+  run_options.stop = [&] { return signals.stop_signal() != 0 || out.reader_gone(); };
+  SequenceRunner runner(&bdsp, source.get(), {&warnings, &out, &stats, &progress}, run_options);
+  const cv::Mat& frame = runner.read_first(options.input);
+  runner.write_initial(
+      initialise(&bdsp.tracker(), frame, polygon, options, source->current_name()));
+  bdsp.tracker().set_keep_debug(out.annotate());
+  while (runner.step()) {
   }
-  double total_ms = 0.0;
-  ProgressBar progress(log, "tracking", summary.expected_frames, !options.quiet);
-  TrackState last_state = TrackState::kTracking;
-  while (options.max_frames <= 0 || summary.frames < options.max_frames) {
-    if (g_stop_signal != 0 || out.set.reader_gone()) break;
-    // A frame that cannot be decoded or does not fit (size, pixel format) is bad: reported,
-    // and either held (its line repeats the boundary) or fatal, by policy.
-    std::string bad;
-    TrackResult r;
-    try {
-      if (!source->read(&frame)) break;
-      r = tracker.track(frame);
-    } catch (const std::runtime_error& e) {
-      bad = e.what();
-    } catch (const std::invalid_argument& e) {
-      bad = source->current_name() + ": " + e.what();
-    }
-    ++summary.frames;
-    const int number = options.start_frame + summary.frames - 1;  // in the input, 1-based
-    if (!bad.empty()) {
-      r = held_bad_frame(bad, number, tracker, last_state, options, log);
-      ++summary.bad_frames;
-      out.write_frame(number, r, frame, "bad frame: " + bad, nullptr);
-    } else {
-      last_state = r.state;
-      add_to_summary(r, &summary, &total_ms);
-      out.write_frame(number, r, frame, frame_note(r, frame.size()), &tracker.debug());
-    }
-    progress.update(summary.frames);
-  }
-  progress.finish(summary.frames);
-  summary.stop_signal = g_stop_signal;
-  if (summary.stop_signal == 0 && out.set.reader_gone()) summary.stop_signal = SIGPIPE;
-  finish_summary(total_ms, &summary);
-  out.set.commit();
+  progress.finish();
+
+  TrackSummary summary = summarise(stats, options.start_frame, expected);
+  summary.stop_signal = signals.stop_signal();
+  if (summary.stop_signal == 0 && out.reader_gone()) summary.stop_signal = SIGPIPE;
+  runner.commit();
   report_end(options, log, &summary);
   if (!options.quiet) log << format_summary(summary);
   return summary;
