@@ -4,9 +4,11 @@
 // starts at the middle of the sequence; gaps and scores are eval/sequence_gap's, as in
 // `scbt eval --gaps` (S@10 after = from the re-acquired frame on).
 //
-//   build/bench/scbt_loss_dataset [--trace clean|grey|jump] DATASET_DIR [SEQUENCE...]
+//   build/bench/scbt_loss_dataset [--trace clean|grey|jump [--dump DIR]] DATASET_DIR [SEQUENCE...]
 #include <cmath>
 #include <cstdio>
+#include <opencv2/imgcodecs.hpp>
+#include <opencv2/imgproc.hpp>
 #include <string>
 #include <vector>
 
@@ -37,8 +39,17 @@ struct Run {
   std::vector<bool> is_wrong;  // E_AL >= 10 px, per score
 };
 
-// trace: print one line per frame (state, confidence, evidence, error) to stderr.
-Run run_variant(const DatasetSequence& sequence, Variant variant, bool trace = false) {
+// Draws `polygon` closed onto `image`.
+void draw_polygon(cv::Mat* image, const Polygon& polygon, const cv::Scalar& colour) {
+  std::vector<cv::Point> points;
+  for (const Point& p : polygon) points.emplace_back(cvRound(p.x), cvRound(p.y));
+  cv::polylines(*image, points, true, colour, 1, cv::LINE_AA);
+}
+
+// trace: print one line per frame (state, confidence, evidence, error) to stderr. dump: a folder
+// to write the frames around the gap's end into, the truth green and the boundary by state.
+Run run_variant(const DatasetSequence& sequence, Variant variant, bool trace = false,
+                const std::string& dump = "") {
   std::vector<Polygon> truth;
   for (const std::string& line : read_text_lines(sequence.ground_truth)) {
     truth.push_back(parse_polygon_line(line));
@@ -78,6 +89,17 @@ Run run_variant(const DatasetSequence& sequence, Variant variant, bool trace = f
                    std::sqrt(area(r.boundary)), centroid(truth[k]).x, centroid(truth[k]).y,
                    std::sqrt(area(truth[k])));
     }
+    if (!dump.empty() && gap.kind != GapVariantKind::kNone && k >= gap.start - 5 &&
+        k < gap.end() + 40) {
+      cv::Mat image = frame.channels() == 1 ? cv::Mat() : frame.clone();
+      if (image.empty()) cv::cvtColor(frame, image, cv::COLOR_GRAY2BGR);
+      draw_polygon(&image, truth[k], cv::Scalar(0, 255, 0));
+      const cv::Scalar colour = r.state == TrackState::kTracking    ? cv::Scalar(255, 128, 0)
+                                : r.state == TrackState::kUncertain ? cv::Scalar(0, 200, 255)
+                                                                    : cv::Scalar(0, 0, 255);
+      draw_polygon(&image, r.boundary, colour);
+      cv::imwrite(dump + "/" + sequence.name + "_" + std::to_string(k + 1) + ".png", image);
+    }
     frames.push_back({k, error, r.confidence, r.state == TrackState::kTracking});
     if (in_gap) continue;
     run.scores.push_back(1.0 - r.confidence);
@@ -103,16 +125,19 @@ int main(int argc, char** argv) {
   using namespace scbt;
   std::vector<std::string> args(argv + 1, argv + argc);
   // --trace clean|grey|jump: one line per frame of that variant to stderr, and only that variant.
-  std::string trace;
-  for (size_t i = 0; i + 1 < args.size(); ++i) {
-    if (args[i] == "--trace") {
-      trace = args[i + 1];
+  // --dump DIR: with --trace, the frames around the gap's end as images into DIR.
+  std::string trace, dump;
+  for (size_t i = 0; i + 1 < args.size();) {
+    if (args[i] == "--trace" || args[i] == "--dump") {
+      (args[i] == "--trace" ? trace : dump) = args[i + 1];
       args.erase(args.begin() + i, args.begin() + i + 2);
-      break;
+    } else {
+      ++i;
     }
   }
   if (args.empty() || !(trace.empty() || trace == "clean" || trace == "grey" || trace == "jump")) {
-    std::fprintf(stderr, "usage: %s [--trace clean|grey|jump] DATASET_DIR [SEQUENCE...]\n",
+    std::fprintf(stderr,
+                 "usage: %s [--trace clean|grey|jump [--dump DIR]] DATASET_DIR [SEQUENCE...]\n",
                  argv[0]);
     return 2;
   }
@@ -123,7 +148,7 @@ int main(int argc, char** argv) {
                             : trace == "grey" ? Variant::kGrey
                                               : Variant::kJump;
     for (const DatasetSequence& sequence : sequences) {
-      const Run run = run_variant(sequence, variant, /*trace=*/true);
+      const Run run = run_variant(sequence, variant, /*trace=*/true, dump);
       std::printf("%s %s: delay %d, S@10 %.3f, AUC %.3f\n", sequence.name.c_str(), trace.c_str(),
                   run.delay, run.success_10, run.auc);
     }

@@ -51,6 +51,10 @@ void LossOptions::check() const {
     throw std::invalid_argument("max_level_change must be in (0, 255], got " +
                                 std::to_string(max_level_change));
   }
+  if (!(cut_correlation >= -1.0 && cut_correlation <= 1.0)) {
+    throw std::invalid_argument("cut_correlation must be in [-1, 1], got " +
+                                std::to_string(cut_correlation));
+  }
   if (confirm_frames < 1 || confirm_frames > 100) {
     throw std::invalid_argument("confirm_frames must be in 1..100, got " +
                                 std::to_string(confirm_frames));
@@ -81,6 +85,7 @@ void LossMonitor::reset(const Polygon& boundary, double inside_level) {
   state_ = TrackState::kTracking;
   misses_ = 0;
   unsure_ = 0;
+  after_cut_ = false;
 }
 
 bool LossMonitor::matches(const Polygon& cycle, const BoundaryEvidence& evidence,
@@ -96,7 +101,9 @@ bool LossMonitor::matches(const Polygon& cycle, const BoundaryEvidence& evidence
 TrackState LossMonitor::update(const Polygon& boundary, double confidence, bool held,
                                const BoundaryEvidence& evidence) {
   const bool miss = held || confidence < options_.miss_confidence;
-  unsure_ = confidence >= options_.tracking_confidence ? 0 : unsure_ + 1;
+  const bool confident = confidence >= options_.tracking_confidence &&
+                         (!after_cut_ || evidence.shape_change <= options_.match_shape_distance);
+  unsure_ = confident ? 0 : unsure_ + 1;
   if (miss || unsure_ >= options_.unsure_to_lost) {
     misses_ += miss ? 1 : 0;
     const bool lost = options_.enabled &&
@@ -108,10 +115,12 @@ TrackState LossMonitor::update(const Polygon& boundary, double confidence, bool 
       reference_level_ = oldest.level;
     }
     state_ = lost ? TrackState::kLost : TrackState::kUncertain;
+    if (lost) after_cut_ = false;  // the search checks its matches against the shape anyway
     return state_;
   }
   misses_ = 0;
-  if (confidence >= options_.tracking_confidence) {
+  if (confident) {
+    after_cut_ = false;
     set_confident(boundary, evidence.inside_level);
     state_ = TrackState::kTracking;
   } else {

@@ -56,6 +56,38 @@ TEST(LossMonitor, MixedMissesAndLowConfidenceCountTogether) {
   EXPECT_EQ(monitor.update(square(0), 0.3, false, {}), TrackState::kLost);
 }
 
+TEST(LossMonitor, AfterACutOnlyAMatchingShapeIsTracked) {
+  LossMonitor monitor;
+  monitor.reset(square(0), 100);
+  BoundaryEvidence changed = level(100);
+  changed.shape_change = 0.08;  // beyond match_shape_distance (0.05)
+  // In a continuous view a confident boundary of changed shape is tracked ...
+  EXPECT_EQ(monitor.update(square(1), 0.95, false, changed), TrackState::kTracking);
+  // ... after a cut it is not, however confident, until one matches the last confident shape.
+  monitor.note_view_cut();
+  EXPECT_TRUE(monitor.after_cut());
+  EXPECT_EQ(monitor.update(square(2), 0.99, false, changed), TrackState::kUncertain);
+  EXPECT_EQ(monitor.last_confident(), square(1));
+  BoundaryEvidence alike = level(100);
+  alike.shape_change = 0.02;
+  EXPECT_EQ(monitor.update(square(3), 0.9, false, alike), TrackState::kTracking);
+  EXPECT_FALSE(monitor.after_cut());
+  EXPECT_EQ(monitor.update(square(4), 0.95, false, changed), TrackState::kTracking);
+}
+
+TEST(LossMonitor, AfterACutUnmatchedBoundariesAreLost) {
+  LossMonitor monitor;
+  monitor.reset(square(0), 100);
+  monitor.note_view_cut();
+  BoundaryEvidence changed = level(100);
+  changed.shape_change = 0.1;
+  for (int k = 0; k < 4; ++k) {
+    EXPECT_EQ(monitor.update(square(k), 0.99, false, changed), TrackState::kUncertain) << k;
+  }
+  EXPECT_EQ(monitor.update(square(4), 0.99, false, changed), TrackState::kLost);
+  EXPECT_FALSE(monitor.after_cut());
+}
+
 TEST(LossMonitor, DisabledNeverLost) {
   LossOptions options;
   options.enabled = false;
@@ -96,6 +128,9 @@ TEST(LossOptions, CheckRejectsBadValues) {
   EXPECT_THROW(o.check(), std::invalid_argument);
   o = LossOptions();
   o.reacquire_confidence = 1.1;
+  EXPECT_THROW(o.check(), std::invalid_argument);
+  o = LossOptions();
+  o.cut_correlation = 1.5;
   EXPECT_THROW(o.check(), std::invalid_argument);
 }
 

@@ -199,6 +199,7 @@ TrackResult Tracker::track(const cv::Mat& frame) {
     // Before the grey window is handed to the motion reference, and against the previous boundary.
     result.evidence = evidence_of(*a, chosen, boundary_);
     result.confidence = options_.confidence(result.evidence);
+    check_view_cut(frame, result);  // before the motion reference moves on
     boundary_ = std::move(chosen);
     boundary_area_ = a->cycles->area(a->choice->index);
     result.cost = a->choice->cost;
@@ -218,6 +219,7 @@ TrackResult Tracker::track(const cv::Mat& frame) {
     if (options_.predict_motion && options_.confirm_motion) appearance_.remember(frame, boundary_);
   } else {
     result.held = true;
+    check_view_cut(frame, result);
     motion_.update_held();
   }
   result.state = monitor_.update(boundary_, result.confidence, result.held, result.evidence);

@@ -131,12 +131,17 @@ class Tracker {
   // grey window gray_ must still be a's (tracker_lost.cc).
   BoundaryEvidence evidence_of(const Attempt& a, const Polygon& chosen,
                                const Polygon& previous) const;
+  // On a surprising frame after a tracked one (held, confidence below tracking, or a shape change
+  // beyond a match): whether the view was cut (LossOptions::cut_correlation), told to the monitor.
+  // Needs the motion reference unchanged (tracker_lost.cc).
+  void check_view_cut(const cv::Mat& frame, const TrackResult& result);
   // A frame while the object is lost: search for it, near its last position, then anywhere.
   TrackResult track_lost(const cv::Mat& frame);
   Attempt attempts_[2];
   LossMonitor monitor_;
   Reacquirer reacquirer_;
   cv::Mat search_gray_;  // the whole frame in grey, while lost
+  cv::Mat cut_gray_;     // the motion reference's window in this frame (check_view_cut)
   // A cycle that matched while lost, waiting for LossOptions::confirm_frames matches in a row.
   Polygon pending_;
   int pending_matches_ = 0;

@@ -2,6 +2,7 @@
 // while it is lost (TrackState::kLost).
 #include <algorithm>
 #include <chrono>
+#include <opencv2/imgproc.hpp>
 
 #include "scbt/lines/line_detector.h"
 #include "scbt/tracker/tracker.h"
@@ -25,6 +26,22 @@ double min_edge_step(const LineDetectorOptions& detector) {
 // the search around a placement is relaxed to this (the shape must then match).
 constexpr double kSearchSimilarity = 0.8;
 
+// How alike two views of the same window are, blur and a moderate shift aside: the best zero-mean
+// normalised correlation of the middle of `reference`, both averaged down to kThumb x kThumb,
+// over shifts of up to (kThumb - kInner) / 2 cells. Near 1 for the same view; low for a cut.
+constexpr int kThumb = 32;
+constexpr int kInner = 20;
+double coarse_view_correlation(const cv::Mat& reference, const cv::Mat& current) {
+  cv::Mat a, b, scores;
+  cv::resize(reference, a, cv::Size(kThumb, kThumb), 0.0, 0.0, cv::INTER_AREA);
+  cv::resize(current, b, cv::Size(kThumb, kThumb), 0.0, 0.0, cv::INTER_AREA);
+  const int margin = (kThumb - kInner) / 2;
+  cv::matchTemplate(b, a(cv::Rect(margin, margin, kInner, kInner)), scores, cv::TM_CCOEFF_NORMED);
+  double best = 0.0;
+  cv::minMaxLoc(scores, nullptr, &best);
+  return best;
+}
+
 }  // namespace
 
 BoundaryEvidence Tracker::evidence_of(const Attempt& a, const Polygon& chosen,
@@ -32,6 +49,17 @@ BoundaryEvidence Tracker::evidence_of(const Attempt& a, const Polygon& chosen,
   const double gap_length = a.choice->cost * a.cycles->area(a.choice->index);
   return measure_evidence(chosen, gap_length, previous, monitor_.reference(), gray_, a.roi.tl(),
                           min_edge_step(options_.detector));
+}
+
+void Tracker::check_view_cut(const cv::Mat& frame, const TrackResult& result) {
+  const LossOptions& loss = options_.loss;
+  const bool surprise = result.held || result.confidence < loss.tracking_confidence ||
+                        result.evidence.shape_change > loss.match_shape_distance;
+  if (monitor_.state() != TrackState::kTracking || !surprise || reference_gray_.empty()) return;
+  to_gray(frame(reference_roi_), &cut_gray_);
+  if (coarse_view_correlation(reference_gray_, cut_gray_) < loss.cut_correlation) {
+    monitor_.note_view_cut();
+  }
 }
 
 TrackResult Tracker::track_lost(const cv::Mat& frame) {
