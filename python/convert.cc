@@ -75,26 +75,44 @@ cv::Mat frame_to_mat(const py::object& object, const char* what, py::array* keep
                  static_cast<size_t>(array.strides(0)));
 }
 
-Polygon array_to_polygon(const py::object& object, const char* what) {
-  py::array_t<double, py::array::c_style | py::array::forcecast> array;
+namespace {
+
+using DoubleRows = py::array_t<double, py::array::c_style | py::array::forcecast>;
+
+// `object` (anything numpy converts) as rows of `columns` finite doubles. TypeError when it does
+// not convert, ValueError for another shape or a row that is not finite; both name `what` and
+// the `shape` expected ("(N, 2) array of x, y coordinates"). With `empty_ok`, an empty list
+// (shape (0,)) is no rows.
+DoubleRows finite_rows(const py::object& object, py::ssize_t columns, const char* what,
+                       const std::string& shape, const std::string& content, bool empty_ok) {
+  DoubleRows array;
   try {
-    array = py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(object);
+    array = DoubleRows::ensure(object);
   } catch (const py::error_already_set&) {
   }
   if (!array) {
     PyErr_Clear();
-    throw py::type_error(std::string(what) + " must be an (N, 2) array of x, y coordinates");
+    throw py::type_error(std::string(what) + " must be an " + shape + " array of " + content);
   }
-  if (array.ndim() != 2 || array.shape(1) != 2) {
-    throw py::value_error(std::string(what) + " must have shape (N, 2), got " + shape_text(array));
+  if (array.ndim() == 1 && array.shape(0) == 0 && empty_ok)
+    return DoubleRows(std::vector<py::ssize_t>{0, columns});
+  if (array.ndim() != 2 || array.shape(1) != columns) {
+    throw py::value_error(std::string(what) + " must have shape " + shape + ", got " +
+                          shape_text(array));
   }
+  for (py::ssize_t i = 0; i < array.shape(0); ++i) {
+    check_finite_row(array.data(i, 0), static_cast<int>(columns), i, what);
+  }
+  return array;
+}
+
+}  // namespace
+
+Polygon array_to_polygon(const py::object& object, const char* what) {
+  const DoubleRows array = finite_rows(object, 2, what, "(N, 2)", "x, y coordinates", false);
   Polygon polygon(static_cast<size_t>(array.shape(0)));
   auto view = array.unchecked<2>();
-  for (py::ssize_t i = 0; i < array.shape(0); ++i) {
-    const double row[2] = {view(i, 0), view(i, 1)};
-    check_finite_row(row, 2, i, what);
-    polygon[i] = Point(row[0], row[1]);
-  }
+  for (py::ssize_t i = 0; i < array.shape(0); ++i) polygon[i] = Point(view(i, 0), view(i, 1));
   return polygon;
 }
 
@@ -109,26 +127,11 @@ py::array_t<double> polygon_to_array(const Polygon& polygon) {
 }
 
 std::vector<Segment> array_to_segments(const py::object& object, const char* what) {
-  py::array_t<double, py::array::c_style | py::array::forcecast> array;
-  try {
-    array = py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(object);
-  } catch (const py::error_already_set&) {
-  }
-  if (!array) {
-    PyErr_Clear();
-    throw py::type_error(std::string(what) + " must be an (M, 4) array of x1, y1, x2, y2 rows");
-  }
-  if (array.ndim() != 2 || array.shape(1) != 4) {
-    // An empty list arrives as shape (0,); accept it as no segments.
-    if (array.ndim() == 1 && array.shape(0) == 0) return {};
-    throw py::value_error(std::string(what) + " must have shape (M, 4), got " + shape_text(array));
-  }
+  const DoubleRows array = finite_rows(object, 4, what, "(M, 4)", "x1, y1, x2, y2 rows", true);
   std::vector<Segment> segments(static_cast<size_t>(array.shape(0)));
   auto view = array.unchecked<2>();
   for (py::ssize_t i = 0; i < array.shape(0); ++i) {
-    const double row[4] = {view(i, 0), view(i, 1), view(i, 2), view(i, 3)};
-    check_finite_row(row, 4, i, what);
-    segments[i] = Segment{Point(row[0], row[1]), Point(row[2], row[3])};
+    segments[i] = Segment{Point(view(i, 0), view(i, 1)), Point(view(i, 2), view(i, 3))};
   }
   return segments;
 }
