@@ -19,6 +19,17 @@
 namespace py = pybind11;
 
 namespace scbt {
+namespace {
+
+// get(edge) of every edge of the graph as an (E,) array.
+template <typename T, typename Get>
+py::array_t<T> per_edge(const SegmentGraph& g, Get get) {
+  py::array_t<T> a(static_cast<py::ssize_t>(g.edges.size()));
+  for (size_t i = 0; i < g.edges.size(); ++i) a.mutable_at(i) = get(g.edges[i]);
+  return a;
+}
+
+}  // namespace
 
 void register_stages(py::module_& m) {
   py::class_<SegmentGraph>(m, "SegmentGraph",
@@ -41,17 +52,13 @@ void register_stages(py::module_& m) {
       .def_property_readonly(
           "edge_detected",
           [](const SegmentGraph& g) {
-            py::array_t<bool> a(static_cast<py::ssize_t>(g.edges.size()));
-            for (size_t i = 0; i < g.edges.size(); ++i) a.mutable_at(i) = g.edges[i].detected;
-            return a;
+            return per_edge<bool>(g, [](const GraphEdge& e) { return e.detected; });
           },
           "(E,) bool array: True for detected segments, False for generated ones.")
       .def_property_readonly(
           "edge_weights",
           [](const SegmentGraph& g) {
-            py::array_t<double> a(static_cast<py::ssize_t>(g.edges.size()));
-            for (size_t i = 0; i < g.edges.size(); ++i) a.mutable_at(i) = g.edges[i].weight;
-            return a;
+            return per_edge<double>(g, [](const GraphEdge& e) { return e.weight; });
           },
           "(E,) float array: Eq. 3 weights (0 for detected edges, length for generated ones).")
       .def_property_readonly("num_vertices", &SegmentGraph::num_vertices)

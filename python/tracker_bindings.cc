@@ -16,6 +16,7 @@
 
 #include "bindings.h"
 #include "convert.h"
+#include "readonly_record.h"
 #include "scbt/render/annotate.h"
 #include "scbt/tracker/tracker.h"
 
@@ -96,80 +97,6 @@ py::dict options_to_dict(const TrackerOptions& o, bool keep_debug) {
   return d;
 }
 
-// Per-frame statistics of Tracker.track (TrackResult without the boundary).
-struct FrameStats {
-  bool held = false;
-  double cost = 0.0;
-  double area_similarity = 0.0;
-  int num_detected = 0;
-  int num_kept = 0;
-  int num_dropped = 0;
-  int num_vertices = 0;
-  int num_edges = 0;
-  int num_candidates = 0;
-  bool recovered = false;
-  std::string state;  // to_string(TrackState)
-  double confidence = 0.0;
-  BoundaryEvidence evidence;
-  bool reacquired = false;
-  double line_ms = 0.0;
-  double grouping_ms = 0.0;
-  double total_ms() const { return line_ms + grouping_ms; }
-};
-
-FrameStats stats_of(const TrackResult& r) {
-  FrameStats s;
-  s.held = r.held;
-  s.cost = r.cost;
-  s.area_similarity = r.area_similarity;
-  s.num_detected = r.num_detected;
-  s.num_kept = r.num_kept;
-  s.num_dropped = r.num_dropped;
-  s.num_vertices = r.num_vertices;
-  s.num_edges = r.num_edges;
-  s.num_candidates = r.num_candidates;
-  s.recovered = r.recovered;
-  s.state = to_string(r.state);
-  s.confidence = r.confidence;
-  s.evidence = r.evidence;
-  s.reacquired = r.reacquired;
-  s.line_ms = r.line_ms;
-  s.grouping_ms = r.grouping_ms;
-  return s;
-}
-
-py::dict evidence_to_dict(const BoundaryEvidence& e) {
-  py::dict d;
-  d["gap_share"] = e.gap_share;
-  d["edge_support"] = e.edge_support;
-  d["shape_change"] = e.shape_change;
-  d["jump"] = e.jump;
-  d["inside_level"] = e.inside_level;
-  return d;
-}
-
-py::dict stats_to_dict(const FrameStats& s) {
-  py::dict d;
-  d["held"] = s.held;
-  d["cost"] = s.cost;
-  d["area_similarity"] = s.area_similarity;
-  d["num_detected"] = s.num_detected;
-  d["num_kept"] = s.num_kept;
-  d["num_dropped"] = s.num_dropped;
-  d["num_vertices"] = s.num_vertices;
-  d["num_edges"] = s.num_edges;
-  d["num_candidates"] = s.num_candidates;
-  d["recovered"] = s.recovered;
-  d["state"] = s.state;
-  d["confidence"] = s.confidence;
-  d["evidence"] = evidence_to_dict(s.evidence);
-  d["reacquired"] = s.reacquired;
-  d["line_ms"] = s.line_ms;
-  d["grouping_ms"] = s.grouping_ms;
-  d["total_ms"] = s.total_ms();
-  return d;
-}
-
 // The Python-facing tracker: the C++ Tracker plus a lock, since track() runs without the GIL
 // and two Python threads could otherwise call into the same tracker at once.
 class PyTracker {
@@ -214,7 +141,9 @@ class PyTracker {
       }
       result = tracker_.track(frame);
     }
-    return py::make_tuple(polygon_to_array(result.boundary), stats_of(result));
+    py::array_t<double> boundary = polygon_to_array(result.boundary);
+    result.boundary.clear();  // FrameStats: the rest of the result
+    return py::make_tuple(boundary, result);
   }
 
   py::object boundary() {
@@ -269,35 +198,35 @@ class PyTracker {
   std::mutex mutex_;
 };
 
-std::string format_stats(const FrameStats& s) {
+std::string format_stats(const TrackResult& s) {
   char text[320];
   std::snprintf(text, sizeof(text),
                 "FrameStats(state='%s', confidence=%.3f, held=%s, cost=%.6g, area_similarity=%.4f, "
                 "num_detected=%d, "
                 "num_kept=%d, num_vertices=%d, num_edges=%d, num_candidates=%d, line_ms=%.3f, "
                 "grouping_ms=%.3f)",
-                s.state.c_str(), s.confidence, s.held ? "True" : "False", s.cost, s.area_similarity,
-                s.num_detected, s.num_kept, s.num_vertices, s.num_edges, s.num_candidates,
-                s.line_ms, s.grouping_ms);
+                to_string(s.state).c_str(), s.confidence, s.held ? "True" : "False", s.cost,
+                s.area_similarity, s.num_detected, s.num_kept, s.num_vertices, s.num_edges,
+                s.num_candidates, s.line_ms, s.grouping_ms);
   return text;
 }
 
 }  // namespace
 
 void register_tracker(py::module_& m) {
-  py::class_<BoundaryEvidence>(
+  ReadonlyRecord<BoundaryEvidence>(
       m, "BoundaryEvidence", "What a frame's confidence was computed from (docs/loss-handling.md).")
-      .def_readonly("gap_share", &BoundaryEvidence::gap_share,
-                    "Share of the boundary's length made of generated (gap-filling) segments.")
-      .def_readonly("edge_support", &BoundaryEvidence::edge_support,
-                    "Share of points along the boundary with a grey step across it.")
-      .def_readonly("shape_change", &BoundaryEvidence::shape_change,
-                    "Shape distance to the last confident boundary.")
-      .def_readonly("jump", &BoundaryEvidence::jump,
-                    "Centroid displacement since the previous frame over sqrt(area).")
-      .def_readonly("inside_level", &BoundaryEvidence::inside_level,
-                    "Mean grey level just inside the boundary (-1 unknown).")
-      .def("as_dict", &evidence_to_dict, "The evidence as a dict.")
+      .field("gap_share", &BoundaryEvidence::gap_share,
+             "Share of the boundary's length made of generated (gap-filling) segments.")
+      .field("edge_support", &BoundaryEvidence::edge_support,
+             "Share of points along the boundary with a grey step across it.")
+      .field("shape_change", &BoundaryEvidence::shape_change,
+             "Shape distance to the last confident boundary.")
+      .field("jump", &BoundaryEvidence::jump,
+             "Centroid displacement since the previous frame over sqrt(area).")
+      .field("inside_level", &BoundaryEvidence::inside_level,
+             "Mean grey level just inside the boundary (-1 unknown).")
+      .with_as_dict("The evidence as a dict.")
       .def("__repr__", [](const BoundaryEvidence& e) {
         char text[200];
         std::snprintf(text, sizeof(text),
@@ -307,35 +236,37 @@ void register_tracker(py::module_& m) {
         return std::string(text);
       });
 
-  py::class_<FrameStats>(m, "FrameStats",
-                         "Statistics and timings of one tracked frame (see Tracker.track).")
-      .def_readonly("held", &FrameStats::held,
-                    "True when no candidate was admissible and the previous boundary was kept.")
-      .def_readonly("cost", &FrameStats::cost, "Grouping cost Γ = |B_G| / area of the choice.")
-      .def_readonly("area_similarity", &FrameStats::area_similarity,
-                    "Area similarity (Eq. 2) of the choice with the previous boundary.")
-      .def_readonly("num_detected", &FrameStats::num_detected, "Segments the detector found.")
-      .def_readonly("num_kept", &FrameStats::num_kept, "Segments passing the distance filter.")
-      .def_readonly("num_dropped", &FrameStats::num_dropped,
-                    "Segments passing the filter but dropped by max_segments.")
-      .def_readonly("num_vertices", &FrameStats::num_vertices, "Vertices of the segment graph.")
-      .def_readonly("num_edges", &FrameStats::num_edges, "Edges of the segment graph.")
-      .def_readonly("num_candidates", &FrameStats::num_candidates,
-                    "BDSP cycle candidates evaluated.")
-      .def_readonly("recovered", &FrameStats::recovered,
-                    "True when the boundary was found again where image motion moved it.")
-      .def_readonly("state", &FrameStats::state,
-                    "'tracking', 'uncertain' or 'lost' (docs/loss-handling.md).")
-      .def_readonly("confidence", &FrameStats::confidence,
-                    "How far to trust the boundary, in [0, 1]; 0 when held or lost.")
-      .def_readonly("evidence", &FrameStats::evidence,
-                    "The BoundaryEvidence the confidence was computed from.")
-      .def_readonly("reacquired", &FrameStats::reacquired,
-                    "True on the frame a lost object was found again.")
-      .def_readonly("line_ms", &FrameStats::line_ms, "Colour conversion + line detection (ms).")
-      .def_readonly("grouping_ms", &FrameStats::grouping_ms, "Filter + graph + BDSP + choice (ms).")
-      .def_property_readonly("total_ms", &FrameStats::total_ms, "line_ms + grouping_ms.")
-      .def("as_dict", &stats_to_dict, "The statistics as a dict.")
+  // Tracker.track's statistics: the TrackResult without its boundary.
+  ReadonlyRecord<TrackResult>(m, "FrameStats",
+                              "Statistics and timings of one tracked frame (see Tracker.track).")
+      .field("held", &TrackResult::held,
+             "True when no candidate was admissible and the previous boundary was kept.")
+      .field("cost", &TrackResult::cost, "Grouping cost Γ = |B_G| / area of the choice.")
+      .field("area_similarity", &TrackResult::area_similarity,
+             "Area similarity (Eq. 2) of the choice with the previous boundary.")
+      .field("num_detected", &TrackResult::num_detected, "Segments the detector found.")
+      .field("num_kept", &TrackResult::num_kept, "Segments passing the distance filter.")
+      .field("num_dropped", &TrackResult::num_dropped,
+             "Segments passing the filter but dropped by max_segments.")
+      .field("num_vertices", &TrackResult::num_vertices, "Vertices of the segment graph.")
+      .field("num_edges", &TrackResult::num_edges, "Edges of the segment graph.")
+      .field("num_candidates", &TrackResult::num_candidates, "BDSP cycle candidates evaluated.")
+      .field("recovered", &TrackResult::recovered,
+             "True when the boundary was found again where image motion moved it.")
+      .computed(
+          "state", [](const TrackResult& r) { return to_string(r.state); },
+          "'tracking', 'uncertain' or 'lost' (docs/loss-handling.md).")
+      .field("confidence", &TrackResult::confidence,
+             "How far to trust the boundary, in [0, 1]; 0 when held or lost.")
+      .field("evidence", &TrackResult::evidence,
+             "The BoundaryEvidence the confidence was computed from.")
+      .field("reacquired", &TrackResult::reacquired,
+             "True on the frame a lost object was found again.")
+      .field("line_ms", &TrackResult::line_ms, "Colour conversion + line detection (ms).")
+      .field("grouping_ms", &TrackResult::grouping_ms, "Filter + graph + BDSP + choice (ms).")
+      .computed(
+          "total_ms", [](const TrackResult& r) { return r.total_ms(); }, "line_ms + grouping_ms.")
+      .with_as_dict("The statistics as a dict.")
       .def("__repr__", &format_stats);
 
   py::class_<PyTracker>(
