@@ -38,6 +38,7 @@ void write_file(const fs::path& path, const std::string& content) {
   std::ofstream(path, std::ios::binary) << content;
 }
 
+using cli_test::fresh_test_dir;
 using cli_test::read_file;
 using cli_test::read_text_lines_of;
 using cli_test::run_scbt;
@@ -476,12 +477,7 @@ INSTANTIATE_TEST_SUITE_P(Table, CliBadInputTest, ::testing::Range<size_t>(0, cas
 class CliRunTest : public ::testing::Test {
  protected:
   void SetUp() override {
-    dir_ = fs::temp_directory_path() /
-           ("scbt_cli_run_" +
-            std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()) + "_" +
-            std::to_string(::getpid()));
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
+    dir_ = fresh_test_dir("scbt_cli_run");
     write_sequence(dir_);
   }
   void TearDown() override { fs::remove_all(dir_); }

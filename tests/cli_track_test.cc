@@ -1,7 +1,6 @@
 // `scbt track` end to end on rendered scenes: the state and confidence columns, the results file
 // while the object is lost, the annotated frames coloured by state, --start-frame and --init-box.
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 #include <algorithm>
 #include <cstdio>
@@ -19,6 +18,7 @@ namespace scbt {
 namespace {
 
 namespace fs = std::filesystem;
+using cli_test::fresh_test_dir;
 using cli_test::read_file;
 using cli_test::read_text_lines_of;
 using cli_test::run_scbt;
@@ -50,11 +50,7 @@ std::vector<std::string> fields_of(const std::string& line) {
 class CliTrackTest : public ::testing::Test {
  protected:
   void SetUp() override {
-    dir_ = fs::temp_directory_path() /
-           ("scbt_cli_track_" +
-            std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()) + "_" +
-            std::to_string(::getpid()));
-    fs::remove_all(dir_);
+    dir_ = fresh_test_dir("scbt_cli_track");
     fs::create_directories(dir_ / "seq");
     SceneOptions scene;
     scene.size = cv::Size(240, 180);
