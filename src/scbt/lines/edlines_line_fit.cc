@@ -10,19 +10,30 @@ namespace {
 constexpr double kInitialFitError = 0.5;  // RMS error of a line's first min_length pixels
 constexpr int kMaxOutliers = 5;           // consecutive far pixels that end a line
 
+// The means of n points (u_i, v_i) and their centred sums of squares and products.
+struct CentredSums {
+  double mu = 0.0, mv = 0.0;
+  double suu = 0.0, suv = 0.0, svv = 0.0;  // svv only when asked for
+};
+
+CentredSums centred_sums(const double* u, const double* v, int n, bool with_svv) {
+  CentredSums s;
+  for (int i = 0; i < n; ++i) s.mu += u[i], s.mv += v[i];
+  s.mu /= n;
+  s.mv /= n;
+  for (int i = 0; i < n; ++i) {
+    s.suu += (u[i] - s.mu) * (u[i] - s.mu);
+    s.suv += (u[i] - s.mu) * (v[i] - s.mv);
+    if (with_svv) s.svv += (v[i] - s.mv) * (v[i] - s.mv);
+  }
+  return s;
+}
+
 // Least-squares line v = a + b u through (u_i, v_i); RMS orthogonal distance in `error`.
 void fit_uv(const double* u, const double* v, int n, double* a, double* b, double* error) {
-  double mu = 0.0, mv = 0.0;
-  for (int i = 0; i < n; ++i) mu += u[i], mv += v[i];
-  mu /= n;
-  mv /= n;
-  double suu = 0.0, suv = 0.0;
-  for (int i = 0; i < n; ++i) {
-    suu += (u[i] - mu) * (u[i] - mu);
-    suv += (u[i] - mu) * (v[i] - mv);
-  }
-  *b = suu > 0.0 ? suv / suu : 0.0;
-  *a = mv - *b * mu;
+  const CentredSums s = centred_sums(u, v, n, false);
+  *b = s.suu > 0.0 ? s.suv / s.suu : 0.0;
+  *a = s.mv - *b * s.mu;
   if (error != nullptr) {
     double sum = 0.0;
     for (int i = 0; i < n; ++i) {
@@ -72,16 +83,8 @@ void EdLines::split_segment(int segment, int min_length) {
     for (; total - first >= min_length; ++first) {
       const double* x = xs_.data() + first;
       const double* y = ys_.data() + first;
-      double mx = 0.0, my = 0.0;
-      for (int i = 0; i < min_length; ++i) mx += x[i], my += y[i];
-      mx /= min_length;
-      my /= min_length;
-      double vx = 0.0, vy = 0.0;
-      for (int i = 0; i < min_length; ++i) {
-        vx += (x[i] - mx) * (x[i] - mx);
-        vy += (y[i] - my) * (y[i] - my);
-      }
-      invert = vx < vy;  // steep: x = a + b y
+      const CentredSums spread = centred_sums(x, y, min_length, true);
+      invert = spread.suu < spread.svv;  // steep: x = a + b y
       fit_uv(invert ? y : x, invert ? x : y, min_length, &a, &b, &error);
       if (error <= kInitialFitError) {
         found = true;
