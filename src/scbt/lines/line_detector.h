@@ -47,7 +47,7 @@ struct LineDetectorOptions {
   // distance plus `roi_padding` pixels, instead of on the whole frame (EDLines' 5x5 Gaussian and
   // 3x3 Sobel need 3 px; 8 px measured at least as accurate as the whole frame on all six
   // dataset sequences, while single sequences' success rates move by up to 0.04 with a pixel
-  // more or less padding, since segments cut by the band's edge differ; README, "Speed").
+  // more or less padding, since segments cut by the band's edge differ; docs/performance.md).
   // false: the whole frame (the straightforward pipeline).
   bool crop_to_boundary = true;
   double roi_padding = 8.0;
