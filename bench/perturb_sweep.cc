@@ -29,6 +29,11 @@ struct FrameScore {
   double e_al = 0.0;
   bool held = false;
   double ms = 0.0;
+  scbt::TrackState state = scbt::TrackState::kTracking;
+  double confidence = 0.0;
+  double gap_share = 0.0;
+  double edge_support = 0.0;
+  double shape_change = 0.0;
 };
 
 // Keeps a scaled polygon inside the frame the tracker sees.
@@ -79,6 +84,11 @@ void run_sequence(const scbt::DatasetSequence& sequence,
       s.frame = k;
       s.held = r.held;
       s.ms = r.total_ms();
+      s.state = r.state;
+      s.confidence = r.confidence;
+      s.gap_share = r.evidence.gap_share;
+      s.edge_support = r.evidence.edge_support;
+      s.shape_change = r.evidence.shape_change;
       s.e_al = scbt::alignment_error(scbt::scale_polygon_from_frame(r.boundary, p.scale()),
                                      truth[k - 1], frame.size());
       (*scores)[c].push_back(s);
@@ -120,6 +130,7 @@ int main(int argc, char** argv) {
   app.add_option("--noise-deviations", options.adaptive_thresholds.noise_deviations);
   app.add_option("--smooth-noise", options.adaptive_thresholds.smooth_noise);
   app.add_option("--smoothed-noise", options.adaptive_thresholds.smoothed_noise);
+  app.add_option("--loss-handling", options.loss.enabled);
   CLI11_PARSE(app, argc, argv);
   try {
     options.check();
@@ -172,12 +183,15 @@ int main(int argc, char** argv) {
     }
     if (!frames_csv.empty()) {
       std::ofstream csv(frames_csv);
-      csv << "perturbation,sequence,frame,e_al,held,ms\n";
+      csv << "perturbation,sequence,frame,e_al,held,ms,state,confidence,gap_share,edge_support,"
+             "shape_change\n";
       for (size_t c = 0; c < perturbations.size(); ++c) {
         for (size_t s = 0; s < sequences.size(); ++s) {
           for (const FrameScore& f : scores[s][c]) {
             csv << perturbations[c].name() << ',' << sequences[s].name << ',' << f.frame << ','
-                << f.e_al << ',' << f.held << ',' << f.ms << '\n';
+                << f.e_al << ',' << f.held << ',' << f.ms << ',' << scbt::to_string(f.state) << ','
+                << f.confidence << ',' << f.gap_share << ',' << f.edge_support << ','
+                << f.shape_change << '\n';
           }
         }
       }

@@ -88,9 +88,9 @@ void LossMonitor::reset(const Polygon& boundary, double inside_level) {
   after_cut_ = false;
 }
 
-bool LossMonitor::matches(const Polygon& cycle, const BoundaryEvidence& evidence,
-                          double confidence) const {
-  if (confidence < options_.reacquire_confidence) return false;
+bool LossMonitor::matches(const Polygon& cycle, const BoundaryEvidence& evidence, double confidence,
+                          double min_confidence) const {
+  if (confidence < min_confidence) return false;
   if (reference_level_ >= 0.0 && evidence.inside_level >= 0.0 &&
       std::abs(evidence.inside_level - reference_level_) > options_.max_level_change) {
     return false;

@@ -85,8 +85,13 @@ class LossMonitor {
   // The object found again while lost: tracking resumes from `boundary`.
   void resume(const Polygon& boundary, double inside_level) { reset(boundary, inside_level); }
   // Whether a cycle found while lost is the object: its shape and inside level match the last
-  // confident boundary's and its confidence is that of a tracked frame.
-  bool matches(const Polygon& cycle, const BoundaryEvidence& evidence, double confidence) const;
+  // confident boundary's and its confidence is at least reacquire_confidence (a search over the
+  // frame) or `min_confidence` (a search where the object was last seen, as tracking does).
+  bool matches(const Polygon& cycle, const BoundaryEvidence& evidence, double confidence) const {
+    return matches(cycle, evidence, confidence, options_.reacquire_confidence);
+  }
+  bool matches(const Polygon& cycle, const BoundaryEvidence& evidence, double confidence,
+               double min_confidence) const;
 
   TrackState state() const { return state_; }
   // The shape searched for while lost: the oldest of the last confident frames (see history_).

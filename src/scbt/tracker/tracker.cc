@@ -126,18 +126,26 @@ void Tracker::attempt(const cv::Mat& frame, const Polygon& prior, Attempt* a,
       a->stages.filter_ms + a->stages.graph_ms + a->stages.search_ms + a->stages.choice_ms;
 }
 
+void Tracker::remember_reference(const cv::Mat& frame, const Attempt& a) {
+  if (!options_.recover_by_motion) return;
+  reference_roi_ = a.roi;
+  if (frame.channels() == 1) {
+    // Grey input is a view of the caller's frame: a deep copy, into the reused buffer.
+    gray_.copyTo(reference_gray_);
+  } else {
+    // gray_ holds its own conversion: hand it over instead of copying it; the next frame's
+    // conversion then reuses the old reference's buffer.
+    std::swap(gray_, reference_gray_);
+  }
+}
+
 bool Tracker::confirmed(const cv::Mat& frame, const Polygon& moved, const Polygon& unmoved) {
   const double agreement = appearance_.agreement(frame, moved);
   return agreement >= options_.min_motion_agreement &&
          agreement > appearance_.agreement(frame, unmoved);
 }
 
-TrackResult Tracker::track(const cv::Mat& frame) {
-  if (!initialized()) throw std::logic_error("Tracker::track called before init");
-  if (frame.empty()) to_gray(frame, &gray_);  // throws
-  check_frame_size(frame, frame_size_);
-  if (monitor_.state() == TrackState::kLost) return track_lost(frame);
-  TrackResult result;
+Tracker::Attempt* Tracker::search(const cv::Mat& frame, TrackResult* result) {
   Attempt* a = &attempts_[0];
   if (options_.predict_motion) {
     motion_.predict(boundary_, /*with_scale=*/false, &predicted_);
@@ -149,9 +157,9 @@ TrackResult Tracker::track(const cv::Mat& frame) {
     predicted_ = boundary_;
   }
   attempt(frame, predicted_, a, options_.min_area_similarity);
-  result.line_ms = a->line_ms;
-  result.grouping_ms = a->grouping_ms;
-  result.stages = a->stages;
+  result->line_ms = a->line_ms;
+  result->grouping_ms = a->grouping_ms;
+  result->stages = a->stages;
 
   // No candidate within the area gate of the last boundary: at a low frame rate an object
   // approaching or receding fast grows or shrinks by more than the gate between frames. Search
@@ -164,7 +172,7 @@ TrackResult Tracker::track(const cv::Mat& frame) {
     if (!options_.confirm_motion || confirmed(frame, scaled, predicted_)) {
       Attempt* retry = &attempts_[1];
       attempt(frame, scaled, retry, options_.min_area_similarity);
-      add_retry_times(*retry, &result);
+      add_retry_times(*retry, result);
       if (retry->choice) a = retry;
     }
   }
@@ -177,8 +185,8 @@ TrackResult Tracker::track(const cv::Mat& frame) {
     to_gray(frame(reference_roi_), &current);
     const std::optional<TranslationEstimate> motion =
         estimate_translation(reference_gray_, current);
-    result.stages.recovery_ms = elapsed_ms(recover_start);
-    result.grouping_ms += result.stages.recovery_ms;
+    result->stages.recovery_ms = elapsed_ms(recover_start);
+    result->grouping_ms += result->stages.recovery_ms;
     // A move well inside the search band was already searched; re-searching near the same place
     // only invites a worse cycle, so only a move of at least half the band is followed.
     if (motion && cv::norm(motion->shift) >= 0.5 * options_.filter_distance) {
@@ -186,13 +194,23 @@ TrackResult Tracker::track(const cv::Mat& frame) {
       for (Point& p : moved) p += motion->shift;
       Attempt* retry = &attempts_[1];
       attempt(frame, moved, retry, options_.min_area_similarity);
-      add_retry_times(*retry, &result);
+      add_retry_times(*retry, result);
       if (retry->choice) {
         a = retry;
-        result.recovered = true;
+        result->recovered = true;
       }
     }
   }
+  return a;
+}
+
+TrackResult Tracker::track(const cv::Mat& frame) {
+  if (!initialized()) throw std::logic_error("Tracker::track called before init");
+  if (frame.empty()) to_gray(frame, &gray_);  // throws
+  check_frame_size(frame, frame_size_);
+  if (monitor_.state() == TrackState::kLost) return track_lost(frame);
+  TrackResult result;
+  Attempt* a = search(frame, &result);
 
   if (a->choice) {
     Polygon chosen = a->cycles->polygon(a->graph, a->choice->index);
@@ -204,17 +222,7 @@ TrackResult Tracker::track(const cv::Mat& frame) {
     boundary_area_ = a->cycles->area(a->choice->index);
     result.cost = a->choice->cost;
     result.area_similarity = a->choice->similarity;
-    if (options_.recover_by_motion) {
-      reference_roi_ = a->roi;
-      if (frame.channels() == 1) {
-        // Grey input is a view of the caller's frame: a deep copy, into the reused buffer.
-        gray_.copyTo(reference_gray_);
-      } else {
-        // gray_ holds its own conversion: hand it over instead of copying it; the next frame's
-        // conversion then reuses the old reference's buffer.
-        std::swap(gray_, reference_gray_);
-      }
-    }
+    remember_reference(frame, *a);
     motion_.update(boundary_);
     if (options_.predict_motion && options_.confirm_motion) appearance_.remember(frame, boundary_);
   } else {
@@ -229,6 +237,7 @@ TrackResult Tracker::track(const cv::Mat& frame) {
     boundary_ = monitor_.latest_confident();
     boundary_area_ = area(boundary_);
   }
+  if (result.state == TrackState::kLost) lost_output_ = boundary_;
 
   result.boundary = boundary_;
   result.num_detected = static_cast<int>(a->detected.size());

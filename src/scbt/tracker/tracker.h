@@ -123,6 +123,10 @@ class Tracker {
     StageTimes stages;
   };
   void attempt(const cv::Mat& frame, const Polygon& prior, Attempt* a, double min_similarity);
+  // A tracking frame's search around the boundary: where it is (or its motion predicts it), then
+  // with its predicted growth, then where the image moved it. Returns the attempt to use (its
+  // choice empty when nothing qualified); `result` gets the times.
+  Attempt* search(const cv::Mat& frame, TrackResult* result);
   // Whether `moved` (a predicted placement of the boundary) agrees with its appearance better
   // than `unmoved` does, and at least by TrackerOptions::min_motion_agreement.
   bool confirmed(const cv::Mat& frame, const Polygon& moved, const Polygon& unmoved);
@@ -137,6 +141,12 @@ class Tracker {
   void check_view_cut(const cv::Mat& frame, const TrackResult& result);
   // A frame while the object is lost: search for it, near its last position, then anywhere.
   TrackResult track_lost(const cv::Mat& frame);
+  // The first search while lost (tracker_resume.cc): tracking's own search, with the tracking
+  // bar. True (and *result filled) when the object was found there.
+  bool resume_in_place(const cv::Mat& frame, TrackResult* result);
+  // After a frame whose boundary was found by attempt `a`: its grey window becomes the motion
+  // reference (TrackerOptions::recover_by_motion).
+  void remember_reference(const cv::Mat& frame, const Attempt& a);
   Attempt attempts_[2];
   LossMonitor monitor_;
   Reacquirer reacquirer_;
@@ -144,6 +154,9 @@ class Tracker {
   cv::Mat cut_gray_;     // the motion reference's window in this frame (check_view_cut)
   // A cycle that matched while lost, waiting for LossOptions::confirm_frames matches in a row.
   Polygon pending_;
+  // The output while lost: the boundary when the object was declared lost. boundary_ meanwhile
+  // follows whatever tracking's own search finds (tracker_resume.cc).
+  Polygon lost_output_;
   int pending_matches_ = 0;
   SegmentGraph match_graph_;  // the graph the best match while lost was found in
   int match_kept_ = 0;

@@ -64,13 +64,16 @@ void Tracker::check_view_cut(const cv::Mat& frame, const TrackResult& result) {
 
 TrackResult Tracker::track_lost(const cv::Mat& frame) {
   TrackResult result;
+  if (resume_in_place(frame, &result)) return result;
+  const double in_place_line_ms = result.line_ms, in_place_grouping_ms = result.grouping_ms;
+  result = TrackResult();
   result.state = TrackState::kLost;
   result.held = true;
   const Clock::time_point line_start = Clock::now();
   to_gray(frame, &search_gray_);
   const std::vector<Segment> segments =
       detector_->detect_in(search_gray_, cv::Point(0, 0), frame_size_);
-  result.line_ms = elapsed_ms(line_start);
+  result.line_ms = in_place_line_ms + elapsed_ms(line_start);
 
   const Clock::time_point rank_start = Clock::now();
   const LossOptions& loss = options_.loss;
@@ -87,7 +90,7 @@ TrackResult Tracker::track_lost(const cv::Mat& frame) {
   placements.insert(placements.begin(), Placement{monitor_.latest_confident(), 0.0, true, 1.0});
   if (!pending_.empty()) placements.insert(placements.begin(), Placement{pending_, 0.0, true, 1.0});
   result.stages.recovery_ms = elapsed_ms(rank_start);
-  result.grouping_ms = result.stages.recovery_ms;
+  result.grouping_ms = in_place_grouping_ms + result.stages.recovery_ms;
 
   // Every placement is searched and the best match kept (a look-alike found first must not hide
   // the object found later); last frame's match found again is taken at once.
@@ -127,7 +130,7 @@ TrackResult Tracker::track_lost(const cv::Mat& frame) {
     pending_.clear();
     pending_matches_ = 0;
     result.confidence = 0.0;
-    result.boundary = boundary_;
+    result.boundary = lost_output_;
     return result;
   }
   const bool same_place = !pending_.empty() && cv::norm(centroid(match) - centroid(pending_)) <=
@@ -138,7 +141,7 @@ TrackResult Tracker::track_lost(const cv::Mat& frame) {
     // Not yet trusted: still lost, the last confident boundary stays the output, and with it
     // no confidence (the match's own is not the output's).
     result.confidence = 0.0;
-    result.boundary = boundary_;
+    result.boundary = lost_output_;
     return result;
   }
   result.state = TrackState::kTracking;
