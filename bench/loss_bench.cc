@@ -1,11 +1,13 @@
 // What loss handling adds to a normally tracked frame: the evidence of the chosen boundary
 // (confidence.h: gap share, edge samples, shape descriptor, jump), the confidence, and the state
-// update that records a confident boundary (track_state.h). Run pinned to one core:
+// update that records a confident boundary (track_state.h), and the keyframe kept for the search
+// (scene_keyframes.h). Run pinned to one core:
 //   taskset -c 0 build/bench/scbt_loss_bench
 #include <benchmark/benchmark.h>
 
 #include "scbt/synthetic/scene.h"
 #include "scbt/tracker/confidence.h"
+#include "scbt/tracker/scene_keyframes.h"
 #include "scbt/tracker/track_state.h"
 #include "scbt/tracker/tracker.h"
 
@@ -45,6 +47,19 @@ void BM_ConfidenceAndState(benchmark::State& state) {
   }
 }
 BENCHMARK(BM_ConfidenceAndState)->Arg(0)->Arg(1)->Unit(benchmark::kMicrosecond);
+
+// SceneKeyframes::offer, called on every `tracking` frame: a count, and a grey copy of the whole
+// 640x480 BGR frame on every keep_every-th call. The mean per call is what a normal frame pays.
+void BM_KeyframeOffer(benchmark::State& state) {
+  SceneOptions options;
+  const SceneFrame frame = render_frame(options, Pose{}, 0);
+  SceneKeyframes keyframes;
+  for (auto _ : state) {
+    keyframes.offer(frame.image, frame.truth);
+    benchmark::ClobberMemory();
+  }
+}
+BENCHMARK(BM_KeyframeOffer)->Unit(benchmark::kMicrosecond);
 
 }  // namespace
 }  // namespace scbt

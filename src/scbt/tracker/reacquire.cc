@@ -41,15 +41,10 @@ struct Scored {
 
 }  // namespace
 
-std::vector<Placement> Reacquirer::rank(const Polygon& outline,
-                                        const std::vector<Segment>& segments, cv::Size frame_size,
-                                        const PlacementOptions& options) {
-  std::vector<Placement> placements;
-  std::vector<Point> picked_centers;
-  std::vector<double> picked_scales;
-  const double size = std::sqrt(area(outline));
-  if (segments.empty() || outline.size() < 3 || !(size > 0.0)) return placements;
-
+void Reacquirer::set_segments(const std::vector<Segment>& segments, cv::Size frame_size,
+                              double cap) {
+  empty_ = segments.empty();
+  cap_ = cap;
   edges_.create(frame_size, CV_8U);
   edges_.setTo(255);
   for (const Segment& s : segments) {
@@ -57,12 +52,22 @@ std::vector<Placement> Reacquirer::rank(const Polygon& outline,
              cv::Point(cvRound(s.b.x), cvRound(s.b.y)), 0);
   }
   cv::distanceTransform(edges_, distance_, cv::DIST_L2, 3, CV_32F);
-  cv::min(distance_, options.cap, distance_);
+  cv::min(distance_, cap, distance_);
+}
+
+std::vector<Placement> Reacquirer::rank(const Polygon& outline,
+                                        const PlacementOptions& options) const {
+  std::vector<Placement> placements;
+  std::vector<Point> picked_centers;
+  std::vector<double> picked_scales;
+  const double size = std::sqrt(area(outline));
+  if (empty_ || outline.size() < 3 || !(size > 0.0)) return placements;
+  const cv::Size frame_size = distance_.size();
 
   const Point home = centroid(outline);
   const std::vector<Point> samples = outline_samples(outline, home);
   const int grid = std::clamp(static_cast<int>(size / 12.0), 2, 8);
-  const double max_chamfer = options.max_chamfer_share * options.cap;
+  const double max_chamfer = options.max_chamfer_share * cap_;
   const int w = frame_size.width, h = frame_size.height;
 
   std::vector<Scored> scored;
@@ -87,7 +92,7 @@ std::vector<Placement> Reacquirer::rank(const Polygon& outline,
           const int x = cvRound(cx + scale * p.x), y = cvRound(cy + scale * p.y);
           if (x < 0 || y < 0 || x >= w || y >= h) {
             ++outside;
-            sum += options.cap;
+            sum += cap_;
           } else {
             sum += distance_.at<float>(y, x);
           }

@@ -22,9 +22,6 @@ struct Placement {
 struct PlacementOptions {
   double min_scale = 0.75;
   double max_scale = 1.33;
-  // Distances beyond this count as this (pixels): a missing piece of outline costs a bounded
-  // amount. The tracker passes half its filter distance.
-  double cap = 10.0;
   // Placements worse than this share of the cap are not worth a search.
   double max_chamfer_share = 0.8;
   // Placements are tried with at least this share of the outline inside the frame (the rest
@@ -36,14 +33,19 @@ struct PlacementOptions {
 
 class Reacquirer {
  public:
+  // The frame's segments to rank placements against. Distances beyond `cap` count as `cap`
+  // (pixels): a missing piece of outline costs a bounded amount (the tracker passes half its
+  // filter distance).
+  void set_segments(const std::vector<Segment>& segments, cv::Size frame_size, double cap);
   // The best placements of `outline` over the segments: up to near_tries within one outline
   // size of its current position, then up to frame_tries anywhere (near ones included), best
   // first, no two of the same scale closer than a quarter of the outline's size. Empty when there
   // are no segments.
-  std::vector<Placement> rank(const Polygon& outline, const std::vector<Segment>& segments,
-                              cv::Size frame_size, const PlacementOptions& options);
+  std::vector<Placement> rank(const Polygon& outline, const PlacementOptions& options) const;
 
  private:
+  bool empty_ = true;
+  double cap_ = 10.0;
   cv::Mat edges_;     // segments drawn as 0 on 255
   cv::Mat distance_;  // distance transform of edges_, CV_32F
 };

@@ -61,6 +61,7 @@ void Tracker::init(const cv::Mat& frame, const Polygon& polygon) {
   monitor_.reset(polygon, sample_edges(polygon, reference_gray_, {0, 0}, 0.0).inside_level);
   pending_.clear();
   pending_matches_ = 0;
+  keyframes_.clear();
 }
 
 void Tracker::attempt(const cv::Mat& frame, const Polygon& prior, Attempt* a,
@@ -231,6 +232,7 @@ TrackResult Tracker::track(const cv::Mat& frame) {
     motion_.update_held();
   }
   result.state = monitor_.update(boundary_, result.confidence, result.held, result.evidence);
+  if (result.state == TrackState::kTracking) keyframes_.offer(frame, boundary_);
   if (result.state == TrackState::kLost && !result.held) {
     // Lost on a boundary found but not trusted: back to the newest confident one. Lost on a held
     // frame, the held boundary stays (the last found, nearest to where the object went).

@@ -1,7 +1,7 @@
 // A cut of the view (a jump in the video): the rendered scene is seen again through a similarity
-// (moved, and scaled or not), and a look-alike of the object, stretched, is painted where the
-// object was. The tracker must not report the look-alike as tracked, must declare the object lost
-// and find it again where the cut put it.
+// (moved, and scaled or not), with or without a look-alike of the object, stretched, painted where
+// the object was. The tracker must not report a wrong boundary as tracked, must declare the object
+// lost and find it again where the cut put it.
 #include <gtest/gtest.h>
 
 #include <opencv2/imgproc.hpp>
@@ -33,8 +33,9 @@ Polygon transformed(const cv::Matx23d& m, const Polygon& polygon) {
 }
 
 // From frame kCut on, every frame is the rendered one seen through `scale` about the frame's
-// centre and moved by `shift`; with `decoy`, the last outline before the cut, stretched (1.25 x
-// wide, 0.9 x high), is painted in the object's grey where the object was.
+// centre and moved by `shift` (uniform grey beyond the rendered frame: a reflected border would
+// hold mirror images of the object); with `decoy`, the last outline before the cut, stretched (1.25
+// x wide, 0.9 x high), is painted in the object's grey where the object was.
 CutRun track_cut_scene(SceneShape shape, std::uint32_t seed, double scale, Point shift,
                        bool decoy) {
   SceneOptions scene;
@@ -56,7 +57,7 @@ CutRun track_cut_scene(SceneShape shape, std::uint32_t seed, double scale, Point
     SceneFrame& f = run.frames[k];
     cv::Mat warped;
     cv::warpAffine(f.image, warped, cv::Mat(view), f.image.size(), cv::INTER_LINEAR,
-                   cv::BORDER_REFLECT);
+                   cv::BORDER_CONSTANT, cv::Scalar::all(128));
     f.image = warped;
     f.truth = transformed(view, f.truth);
     if (decoy) {
@@ -113,6 +114,14 @@ class TrackerCutTest : public ::testing::TestWithParam<std::tuple<SceneShape, st
 TEST_P(TrackerCutTest, ALookAlikeLeftWhereTheObjectWasIsNotTracked) {
   const auto [shape, seed] = GetParam();
   expect_lost_and_found(track_cut_scene(shape, seed, 1.0, Point(140.0, 60.0), true), 10);
+}
+
+// The scene (object and surroundings) comes back at 0.6 or 1.5 times its size: outside the scales
+// the search tries by itself, found through the registration of the scene (scene_keyframes.h).
+TEST_P(TrackerCutTest, TheObjectComesBackSmallerOrLarger) {
+  const auto [shape, seed] = GetParam();
+  expect_lost_and_found(track_cut_scene(shape, seed, 0.6, Point(100.0, 40.0), false), 10);
+  expect_lost_and_found(track_cut_scene(shape, seed, 1.5, Point(-40.0, 20.0), false), 10);
 }
 
 INSTANTIATE_TEST_SUITE_P(Shapes, TrackerCutTest,

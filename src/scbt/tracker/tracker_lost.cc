@@ -80,11 +80,19 @@ TrackResult Tracker::track_lost(const cv::Mat& frame) {
   PlacementOptions placement_options;
   placement_options.min_scale = loss.min_scale;
   placement_options.max_scale = loss.max_scale;
-  placement_options.cap = 0.5 * options_.filter_distance;
   placement_options.near_tries = loss.near_tries;
   placement_options.frame_tries = loss.frame_tries;
+  reacquirer_.set_segments(segments, frame_size_, 0.5 * options_.filter_distance);
   std::vector<Placement> placements =
-      reacquirer_.rank(monitor_.last_confident(), segments, frame_size_, placement_options);
+      reacquirer_.rank(monitor_.last_confident(), placement_options);
+  // Where the scene says the object is now, and how large (a camera move or a jump while it was
+  // hidden): that placement, then the best ones around it at its scale.
+  const std::optional<RegisteredBoundary> registered = keyframes_.locate(search_gray_);
+  if (registered) {
+    std::vector<Placement> around = reacquirer_.rank(registered->boundary, placement_options);
+    around.insert(around.begin(), Placement{registered->boundary, 0.0, true, registered->scale});
+    placements.insert(placements.begin(), around.begin(), around.end());
+  }
   // First where it was last seen, as it was (a blank or occluded stretch rarely moves it far),
   // and before that last frame's match, where it was found.
   placements.insert(placements.begin(), Placement{monitor_.latest_confident(), 0.0, true, 1.0});
@@ -148,6 +156,7 @@ TrackResult Tracker::track_lost(const cv::Mat& frame) {
   result.held = false;
   result.reacquired = true;
   monitor_.resume(match, result.evidence.inside_level);
+  keyframes_.clear();
   boundary_ = std::move(match);
   boundary_area_ = area(boundary_);
   pending_.clear();
