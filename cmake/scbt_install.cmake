@@ -16,7 +16,7 @@ set(SCBT_PUBLIC_HEADERS
     choice/boundary_choice.h choice/boundary_distance_cache.h
     tracker/tracker.h tracker/tracker_options.h tracker/track_state.h tracker/confidence.h
     tracker/box_init.h tracker/cycle_stage.h tracker/motion_model.h tracker/reacquire.h
-    tracker/contrast_profile.h tracker/frame_checks.h
+    tracker/contrast_profile.h tracker/frame_checks.h tracker/scene_keyframes.h
     depth/boundary_3d.h depth/boundary_3d_io.h depth/camera_info.h depth/circle_fit.h
     depth/depth_options.h depth/pinhole_camera.h)
 foreach(header ${SCBT_PUBLIC_HEADERS})

@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <opencv2/calib3d.hpp>
+#include <opencv2/features2d.hpp>
 #include <stdexcept>
 #include <string>
 
@@ -99,12 +100,12 @@ std::optional<RegisteredBoundary> SceneKeyframes::locate(const cv::Mat& frame) {
   if (k->offered_at < 0 || offers_ - k->offered_at < options_.min_age) k = &slots_[1 - newest_];
   if (k->offered_at < 0) k = &slots_[newest_];
   if (k->offered_at < 0) return std::nullopt;
-  if (!orb_) orb_ = make_orb(options_);
+  cv::Ptr<cv::ORB> orb = make_orb(options_);  // cheap to make; keeps OpenCV's features2d private
   if (!k->described) {
-    orb_->detectAndCompute(k->gray, cv::noArray(), k->points, k->descriptors);
+    orb->detectAndCompute(k->gray, cv::noArray(), k->points, k->descriptors);
     k->described = true;
   }
-  orb_->detectAndCompute(frame, cv::noArray(), frame_points_, frame_descriptors_);
+  orb->detectAndCompute(frame, cv::noArray(), frame_points_, frame_descriptors_);
   const std::optional<cv::Matx23d> m = match_similarity(
       k->points, k->descriptors, cv::Point(0, 0), frame_points_, frame_descriptors_, options_);
   if (!m) return std::nullopt;

@@ -6,7 +6,6 @@
 #pragma once
 
 #include <opencv2/core/mat.hpp>
-#include <opencv2/features2d.hpp>
 #include <optional>
 #include <vector>
 
@@ -65,7 +64,6 @@ class SceneKeyframes {
   Keyframe slots_[2];
   int newest_ = 0;
   int offers_ = 0;
-  cv::Ptr<cv::ORB> orb_;
   std::vector<cv::KeyPoint> frame_points_;
   cv::Mat frame_descriptors_;
 };
