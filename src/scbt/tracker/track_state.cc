@@ -115,7 +115,6 @@ TrackState LossMonitor::update(const Polygon& boundary, double confidence, bool 
       reference_level_ = oldest.level;
     }
     state_ = lost ? TrackState::kLost : TrackState::kUncertain;
-    if (lost) after_cut_ = false;  // the search checks its matches against the shape anyway
     return state_;
   }
   misses_ = 0;

@@ -104,7 +104,8 @@ class LossMonitor {
   const ShapeDescriptor& reference() const { return reference_; }
   const LossOptions& options() const { return options_; }
   // The view was cut (LossOptions::cut_correlation): until a frame is `tracking` again, its
-  // boundary must match the last confident shape.
+  // boundary must match the last confident shape; if the object is lost meanwhile, where it was
+  // says nothing (the search skips resuming in place) until it is found again.
   void note_view_cut() { after_cut_ = true; }
   bool after_cut() const { return after_cut_; }
 

@@ -85,6 +85,9 @@ TEST(LossMonitor, AfterACutUnmatchedBoundariesAreLost) {
     EXPECT_EQ(monitor.update(square(k), 0.99, false, changed), TrackState::kUncertain) << k;
   }
   EXPECT_EQ(monitor.update(square(4), 0.99, false, changed), TrackState::kLost);
+  // Still after the cut while lost (where the object was means nothing); found again, no more.
+  EXPECT_TRUE(monitor.after_cut());
+  monitor.resume(square(9), 100);
   EXPECT_FALSE(monitor.after_cut());
 }
 

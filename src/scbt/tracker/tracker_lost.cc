@@ -64,7 +64,8 @@ void Tracker::check_view_cut(const cv::Mat& frame, const TrackResult& result) {
 
 TrackResult Tracker::track_lost(const cv::Mat& frame) {
   TrackResult result;
-  if (resume_in_place(frame, &result)) return result;
+  // After a cut of the view, where the object was says nothing: only the whole-frame search.
+  if (!monitor_.after_cut() && resume_in_place(frame, &result)) return result;
   const double in_place_line_ms = result.line_ms, in_place_grouping_ms = result.grouping_ms;
   result = TrackResult();
   result.state = TrackState::kLost;
