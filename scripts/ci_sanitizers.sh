@@ -14,7 +14,15 @@ export LSAN_OPTIONS="suppressions=$PWD/scripts/lsan_suppressions.txt:print_suppr
 # The dataset regression is the Release build's job (and scbt track covers the dataset below);
 # the RSS soak is too, since ASan's quarantine grows resident memory on purpose (LSan checks
 # leaks here instead).
-ctest --test-dir "$build" --output-on-failure -j2 -E "${SCBT_ASAN_EXCLUDE:-DatasetRegression|^soak\$}"
+# A test that failed only by LeakSanitizer's own tracer crashing at its exit is run once more
+# (scripts/lsan_tracer_crash_only.sh); any other failure or report fails the run.
+log=$(mktemp)
+if ! ctest --test-dir "$build" --output-on-failure -j2 \
+  -E "${SCBT_ASAN_EXCLUDE:-DatasetRegression|^soak\$}" 2>&1 | tee "$log"; then
+  bash scripts/lsan_tracer_crash_only.sh "$log"
+  ctest --test-dir "$build" --output-on-failure --rerun-failed
+fi
+rm -f "$log"
 
 dataset=${SCBT_DATASET:-../shared/scbt-dataset}
 if [ -d "$dataset/OriginalVideosAVI" ]; then
