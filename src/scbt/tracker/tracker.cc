@@ -140,6 +140,19 @@ void Tracker::remember_reference(const cv::Mat& frame, const Attempt& a) {
   }
 }
 
+void Tracker::report_attempt(const Attempt& a, TrackResult* result) {
+  result->num_detected = static_cast<int>(a.detected.size());
+  result->num_kept = static_cast<int>(a.kept.size());
+  result->num_dropped = a.num_dropped;
+  result->num_vertices = a.graph.num_vertices();
+  result->num_edges = a.graph.num_edges();
+  result->num_candidates = a.cycles->num_candidates();
+  if (keep_debug_) {
+    debug_.detected = a.detected;
+    debug_.graph = a.graph;
+  }
+}
+
 bool Tracker::confirmed(const cv::Mat& frame, const Polygon& moved, const Polygon& unmoved) {
   const double agreement = appearance_.agreement(frame, moved);
   return agreement >= options_.min_motion_agreement &&
@@ -242,16 +255,7 @@ TrackResult Tracker::track(const cv::Mat& frame) {
   if (result.state == TrackState::kLost) lost_output_ = boundary_;
 
   result.boundary = boundary_;
-  result.num_detected = static_cast<int>(a->detected.size());
-  result.num_kept = static_cast<int>(a->kept.size());
-  result.num_dropped = a->num_dropped;
-  result.num_vertices = a->graph.num_vertices();
-  result.num_edges = a->graph.num_edges();
-  result.num_candidates = a->cycles->num_candidates();
-  if (keep_debug_) {
-    debug_.detected = a->detected;
-    debug_.graph = a->graph;
-  }
+  report_attempt(*a, &result);
   return result;
 }
 

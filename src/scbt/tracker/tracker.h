@@ -148,6 +148,8 @@ class Tracker {
   // After a frame whose boundary was found by attempt `a`: its grey window becomes the motion
   // reference (TrackerOptions::recover_by_motion).
   void remember_reference(const cv::Mat& frame, const Attempt& a);
+  // The statistics (and, when kept, the debug view) of the attempt whose boundary is reported.
+  void report_attempt(const Attempt& a, TrackResult* result);
   Attempt attempts_[2];
   LossMonitor monitor_;
   Reacquirer reacquirer_;

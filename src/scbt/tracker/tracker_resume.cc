@@ -38,16 +38,7 @@ bool Tracker::resume_in_place(const cv::Mat& frame, TrackResult* result) {
   remember_reference(frame, *a);
   if (options_.predict_motion && options_.confirm_motion) appearance_.remember(frame, boundary_);
   result->boundary = boundary_;
-  result->num_detected = static_cast<int>(a->detected.size());
-  result->num_kept = static_cast<int>(a->kept.size());
-  result->num_dropped = a->num_dropped;
-  result->num_vertices = a->graph.num_vertices();
-  result->num_edges = a->graph.num_edges();
-  result->num_candidates = a->cycles->num_candidates();
-  if (keep_debug_) {
-    debug_.detected = a->detected;
-    debug_.graph = a->graph;
-  }
+  report_attempt(*a, result);
   return true;
 }
 
