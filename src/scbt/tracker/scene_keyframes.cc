@@ -88,8 +88,7 @@ void SceneKeyframes::offer(const cv::Mat& frame, const Polygon& boundary) {
   if (offers_++ % options_.keep_every != 0 || frame.empty()) return;
   newest_ = 1 - newest_;
   Keyframe& k = slots_[newest_];
-  to_gray(frame, &k.gray);
-  if (k.gray.data == frame.data) k.gray = frame.clone();  // a grey frame is the caller's
+  frame.copyTo(k.image);  // into the slot's buffer, reused from keyframe to keyframe
   k.boundary = boundary;
   k.offered_at = offers_ - 1;
   k.described = false;
@@ -102,7 +101,9 @@ std::optional<RegisteredBoundary> SceneKeyframes::locate(const cv::Mat& frame) {
   if (k->offered_at < 0) return std::nullopt;
   cv::Ptr<cv::ORB> orb = make_orb(options_);  // cheap to make; keeps OpenCV's features2d private
   if (!k->described) {
-    orb->detectAndCompute(k->gray, cv::noArray(), k->points, k->descriptors);
+    cv::Mat gray;
+    to_gray(k->image, &gray);
+    orb->detectAndCompute(gray, cv::noArray(), k->points, k->descriptors);
     k->described = true;
   }
   orb->detectAndCompute(frame, cv::noArray(), frame_points_, frame_descriptors_);

@@ -43,9 +43,11 @@ class SceneKeyframes {
   explicit SceneKeyframes(const KeyframeOptions& options = {});
 
   void clear();
-  // A confidently tracked frame (8-bit grey, BGR or BGRA) and its boundary. Kept (in grey) on
-  // every keep_every-th call only: the whole frame, since the object alone may have changed
-  // (a cup emptied) while its surroundings did not.
+  // A confidently tracked frame (8-bit grey, BGR or BGRA) and its boundary. Kept on every
+  // keep_every-th call only: the whole frame, since the object alone may have changed (a cup
+  // emptied) while its surroundings did not. Copied as given: the grey conversion and the
+  // features wait until the object is lost (a whole-frame conversion on every tracked frame also
+  // woke OpenCV's thread pool).
   void offer(const cv::Mat& frame, const Polygon& boundary);
   // The newest keyframe at least min_age offers old (else the other) registered with `frame`
   // (8-bit grey, the whole frame): its boundary there, or nullopt.
@@ -53,7 +55,7 @@ class SceneKeyframes {
 
  private:
   struct Keyframe {
-    cv::Mat gray;
+    cv::Mat image;  // as offered
     Polygon boundary;
     int offered_at = -1;  // -1: empty
     bool described = false;
