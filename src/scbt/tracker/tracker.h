@@ -145,6 +145,10 @@ class Tracker {
   // The first search while lost (tracker_resume.cc): tracking's own search, with the tracking
   // bar. True (and *result filled) when the object was found there.
   bool resume_in_place(const cv::Mat& frame, TrackResult* result);
+  // Tracking starts again from `boundary`, found in `frame` by either search while lost: the
+  // state, the last confident boundary, the motion model and its references restart there.
+  // `result` gets the state and the boundary; its evidence must already be the boundary's.
+  void resume_tracking_from(const cv::Mat& frame, Polygon boundary, TrackResult* result);
   // After a frame whose boundary was found by attempt `a`: its grey window becomes the motion
   // reference (TrackerOptions::recover_by_motion).
   void remember_reference(const cv::Mat& frame, const Attempt& a);

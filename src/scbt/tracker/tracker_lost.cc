@@ -153,25 +153,11 @@ TrackResult Tracker::track_lost(const cv::Mat& frame) {
     result.boundary = lost_output_;
     return result;
   }
-  result.state = TrackState::kTracking;
-  result.held = false;
-  result.reacquired = true;
-  monitor_.resume(match, result.evidence.inside_level);
-  keyframes_.clear();
-  boundary_ = std::move(match);
-  boundary_area_ = area(boundary_);
-  pending_.clear();
-  pending_matches_ = 0;
-  // The motion model and the motion reference start again from this frame.
-  motion_.reset();
-  motion_.update(boundary_);
-  reference_roi_ = cv::Rect(cv::Point(0, 0), frame_size_);
-  search_gray_.copyTo(reference_gray_);
-  result.boundary = boundary_;
   result.num_kept = match_kept_;
   result.num_vertices = match_graph_.num_vertices();
   result.num_edges = match_graph_.num_edges();
   if (keep_debug_) debug_.graph = match_graph_;
+  resume_tracking_from(frame, std::move(match), &result);
   return result;
 }
 

@@ -1,13 +1,16 @@
-// The first search while the object is lost: tracking's own search (where the object was, where
-// the image moved it), with the bar of a tracked frame. On a poor camera (dim, noisy, blurred) the
-// object is often missed a few frames in a row without having gone anywhere; the whole-frame
-// search's higher bar (it tests many more cycles) would then keep it lost for as long as the image
-// stays poor.
+// Tracking starting again while the object is lost: the first search (tracking's own, where the
+// object was, with the bar of a tracked frame), and the one restart both searches end in.
+#include <opencv2/core.hpp>
+
+#include "scbt/lines/line_detector.h"
 #include "scbt/tracker/tracker.h"
 
 namespace scbt {
 
 bool Tracker::resume_in_place(const cv::Mat& frame, TrackResult* result) {
+  // On a poor camera (dim, noisy, blurred) the object is often missed a few frames in a row
+  // without having gone anywhere; the whole-frame search's higher bar (it tests many more cycles)
+  // would then keep it lost for as long as the image stays poor.
   const Attempt* a = search(frame, result);
   if (!a->choice) return false;
   Polygon cycle = a->cycles->polygon(a->graph, a->choice->index);
@@ -21,25 +24,37 @@ bool Tracker::resume_in_place(const cv::Mat& frame, TrackResult* result) {
     remember_reference(frame, *a);
     return false;
   }
-  result->state = TrackState::kTracking;
-  result->held = false;
-  result->reacquired = true;
   result->evidence = evidence;
   result->confidence = confidence;
   result->cost = a->choice->cost;
   result->area_similarity = a->choice->similarity;
-  monitor_.resume(cycle, evidence.inside_level);
-  boundary_ = std::move(cycle);
-  boundary_area_ = a->cycles->area(a->choice->index);
+  report_attempt(*a, result);
+  resume_tracking_from(frame, std::move(cycle), result);
+  return true;
+}
+
+void Tracker::resume_tracking_from(const cv::Mat& frame, Polygon boundary, TrackResult* result) {
+  result->state = TrackState::kTracking;
+  result->held = false;
+  result->reacquired = true;
+  // The scene keyframes are kept: they are confident views of the object's surroundings, which
+  // finding the object again does not make wrong (init() clears them, for a new object).
+  monitor_.resume(boundary, result->evidence.inside_level);
+  boundary_ = std::move(boundary);
+  boundary_area_ = area(boundary_);
   pending_.clear();
   pending_matches_ = 0;
+  // The motion model, the motion reference (the window the next frame's search would look at)
+  // and the appearance that confirms predictions start again from this frame.
   motion_.reset();
   motion_.update(boundary_);
-  remember_reference(frame, *a);
+  reference_roi_ = detection_roi(
+      boundary_, options_.filter_distance + options_.detector.roi_padding, frame_size_);
+  if (reference_roi_.empty()) reference_roi_ = cv::Rect(cv::Point(0, 0), frame_size_);
+  to_gray(frame(reference_roi_), &cut_gray_);
+  cut_gray_.copyTo(reference_gray_);  // a deep copy: grey input is a view of the caller's frame
   if (options_.predict_motion && options_.confirm_motion) appearance_.remember(frame, boundary_);
   result->boundary = boundary_;
-  report_attempt(*a, result);
-  return true;
 }
 
 }  // namespace scbt
