@@ -168,7 +168,7 @@ std::function<void(const fs::path&)> sequence_video(int dropped) {
   };
 }
 
-std::vector<Case> cases() {
+std::vector<Case> make_cases() {
   const int n = static_cast<int>(sequence().frames.size());
   auto recode = [](int flags_depth, int channels) {
     return [flags_depth, channels](const fs::path& dir) {
@@ -254,7 +254,11 @@ std::vector<Case> cases() {
        0, "", n},
       {"empty polygon file", init_file(""), kTrack, 1, "init.txt: file is empty", -1},
       {"polygon file with a huge line",
-       init_file("3 " + std::string(4 << 20, '7') + " 1 2 3 4 5\n"), kTrack, 1, "init.txt:1:", -1},
+       [](const fs::path& dir) {
+         // Made when the case runs: the table is built in every test process.
+         write_file(dir / "init.txt", "3 " + std::string(4 << 20, '7') + " 1 2 3 4 5\n");
+       },
+       kTrack, 1, "init.txt:1:", -1},
       {"missing polygon file", no_setup, "track seq --init none.txt -o out.txt", 1,
        "none.txt: cannot open for reading", -1},
       {"filter distance out of range", no_setup, kTrack + "--filter-distance -1", 2,
@@ -414,10 +418,16 @@ std::vector<Case> cases() {
   };
 }
 
+// Built once per process: gtest asks for it for every case's name.
+const std::vector<Case>& cases() {
+  static const std::vector<Case> all = make_cases();
+  return all;
+}
+
 class CliBadInputTest : public ::testing::TestWithParam<size_t> {};
 
 TEST_P(CliBadInputTest, MessageExitCodeAndOutput) {
-  const Case c = cases()[GetParam()];
+  const Case& c = cases()[GetParam()];
   SCOPED_TRACE(c.name);
   const fs::path dir =
       fs::temp_directory_path() /
