@@ -1,9 +1,12 @@
 // What loss handling adds to a normally tracked frame: the evidence of the chosen boundary
 // (confidence.h: gap share, edge samples, shape descriptor, jump), the confidence, and the state
 // update that records a confident boundary (track_state.h), and the keyframe kept for the search
-// (scene_keyframes.h). Run pinned to one core:
+// (scene_keyframes.h); and, apart, what a frame costs while the object is lost. Run pinned to one
+// core:
 //   taskset -c 0 build/bench/scbt_loss_bench
 #include <benchmark/benchmark.h>
+
+#include <opencv2/imgproc.hpp>
 
 #include "scbt/synthetic/scene.h"
 #include "scbt/tracker/confidence.h"
@@ -60,6 +63,39 @@ void BM_KeyframeOffer(benchmark::State& state) {
   }
 }
 BENCHMARK(BM_KeyframeOffer)->Unit(benchmark::kMicrosecond);
+
+// One frame while the object is lost (tracker_lost.cc): a rendered rim tracked for 30 frames,
+// then the same background without it, so that every timed frame searches the whole frame and
+// finds nothing. Arg 0: without the placements and matches of another distance or angle
+// (LossOptions::view_change), 1: with them.
+void BM_LostFrame(benchmark::State& state) {
+  SceneOptions options;
+  options.object_size = 60.0;
+  const std::vector<Pose> poses =
+      linear_motion_path(Pose{Point(300.0, 220.0), 0.0, 1.0}, Point(1.0, 0.5), 30);
+  const cv::Mat background = render_background(options, path_region(object_model(options), poses));
+  TrackerOptions tracker_options;
+  tracker_options.loss.view_change.enabled = state.range(0) == 1;
+  Tracker tracker(tracker_options);
+  for (size_t k = 0; k < poses.size(); ++k) {
+    const SceneFrame frame =
+        render_frame(options, background, object_model(options), poses[k], static_cast<int>(k));
+    if (k == 0) {
+      tracker.init(frame.image, frame.truth);
+    } else {
+      tracker.track(frame.image);
+    }
+  }
+  cv::Mat empty;
+  cv::cvtColor(background, empty, cv::COLOR_GRAY2BGR);
+  while (tracker.track(empty).state != TrackState::kLost) {
+  }
+  double ranking_ms = 0.0;
+  for (auto _ : state) ranking_ms += tracker.track(empty).stages.recovery_ms;
+  // The ranking of placements (and the scene registration) within the frame's time.
+  state.counters["ranking_ms"] = benchmark::Counter(ranking_ms, benchmark::Counter::kAvgIterations);
+}
+BENCHMARK(BM_LostFrame)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
 
 }  // namespace
 }  // namespace scbt

@@ -78,4 +78,46 @@ double shape_distance(const ShapeDescriptor& a, const ShapeDescriptor& b) {
   return std::sqrt(sum);
 }
 
+ShapeDescriptor affine_shape_descriptor(const Polygon& polygon, double* aspect) {
+  if (aspect) *aspect = std::numeric_limits<double>::infinity();
+  const size_t n = polygon.size();
+  if (n < 3) return ShapeDescriptor();
+  // Second moments of the region by Green's theorem, about the first vertex (for precision).
+  double a2 = 0.0, cx = 0.0, cy = 0.0, xx = 0.0, yy = 0.0, xy = 0.0;
+  for (size_t i = 0; i < n; ++i) {
+    const Point p = polygon[i] - polygon[0], q = polygon[(i + 1) % n] - polygon[0];
+    const double cross = p.x * q.y - q.x * p.y;
+    a2 += cross;
+    cx += (p.x + q.x) * cross;
+    cy += (p.y + q.y) * cross;
+    xx += (p.x * p.x + p.x * q.x + q.x * q.x) * cross;
+    yy += (p.y * p.y + p.y * q.y + q.y * q.y) * cross;
+    xy += (p.x * q.y + 2.0 * p.x * p.y + 2.0 * q.x * q.y + q.x * p.y) * cross;
+  }
+  if (!(std::abs(a2) > 0.0) || !std::isfinite(a2)) return ShapeDescriptor();
+  cx /= 3.0 * a2;
+  cy /= 3.0 * a2;
+  // Central moments over the area (signs cancel with the orientation's).
+  const double sxx = xx / (6.0 * a2) - cx * cx;
+  const double syy = yy / (6.0 * a2) - cy * cy;
+  const double sxy = xy / (12.0 * a2) - cx * cy;
+  const double half_sum = 0.5 * (sxx + syy);
+  const double root = std::hypot(0.5 * (sxx - syy), sxy);
+  const double major = half_sum + root, minor = half_sum - root;
+  if (!(minor > 0.0) || !std::isfinite(major)) return ShapeDescriptor();
+  // Rotate the major axis onto x and divide each axis by its spread: the whitened polygon. (The
+  // rotation left over is what the descriptor ignores anyway.)
+  const double angle = 0.5 * std::atan2(2.0 * sxy, sxx - syy);
+  const double c = std::cos(angle), s = std::sin(angle);
+  const double kx = 1.0 / std::sqrt(major), ky = 1.0 / std::sqrt(minor);
+  Polygon whitened;
+  whitened.reserve(n);
+  for (const Point& v : polygon) {
+    const Point d = v - polygon[0] - Point(cx, cy);
+    whitened.emplace_back(kx * (c * d.x + s * d.y), ky * (-s * d.x + c * d.y));
+  }
+  if (aspect) *aspect = std::sqrt(major / minor);
+  return shape_descriptor(whitened);
+}
+
 }  // namespace scbt

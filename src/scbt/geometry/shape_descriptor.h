@@ -31,4 +31,11 @@ ShapeDescriptor shape_descriptor(const Polygon& polygon);
 // descriptor is invalid.
 double shape_distance(const ShapeDescriptor& a, const ShapeDescriptor& b);
 
+// The shape up to an affine map (a plane seen from another angle, locally): the polygon whitened
+// by the second moments of its region (its inertia ellipse made a circle), then described as
+// above. A circle and every ellipse give one descriptor; a square and every parallelogram another.
+// `aspect`, when given, gets the inertia ellipse's axis ratio (>= 1; the stretch taken out), or
+// infinity for an invalid polygon.
+ShapeDescriptor affine_shape_descriptor(const Polygon& polygon, double* aspect = nullptr);
+
 }  // namespace scbt

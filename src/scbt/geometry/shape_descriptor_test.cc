@@ -125,5 +125,59 @@ TEST(ShapeDescriptorTest, StableUnderOnePixelVertexNoise) {
   }
 }
 
+// The affine-normalised descriptor: every ellipse is a circle, the axis ratio is reported.
+TEST(AffineShapeDescriptorTest, EllipsesAreOneShapeAndTheirAspectIsMeasured) {
+  const ShapeDescriptor circle = affine_shape_descriptor(ellipse(50, 50, 200));
+  for (double aspect : {1.0, 1.5, 3.0}) {
+    double measured = 0.0;
+    const ShapeDescriptor d = affine_shape_descriptor(ellipse(40 * aspect, 40, 200), &measured);
+    ASSERT_TRUE(d.valid);
+    EXPECT_LT(shape_distance(circle, d), 1e-3) << aspect;
+    EXPECT_NEAR(measured, aspect, 1e-3 * aspect);
+  }
+  double aspect = 0.0;
+  EXPECT_FALSE(affine_shape_descriptor({{0, 0}, {1, 1}, {2, 2}}, &aspect).valid);
+  EXPECT_TRUE(std::isinf(aspect));
+}
+
+// Random affine maps (stretch up to 2:1 in any direction, shear, rotation, translation) move the
+// affine descriptor by far less than the distance between unrelated random shapes.
+TEST(AffineShapeDescriptorTest, InvariantToAffineMapsOverRandomShapes) {
+  std::mt19937 rng(13);
+  std::uniform_real_distribution<double> angle(-kPi, kPi), stretch(1.0, 2.0), shear(-0.3, 0.3),
+      shift(-500.0, 500.0);
+  std::uniform_int_distribution<int> vertices(5, 12);
+  std::vector<ShapeDescriptor> descriptors;
+  double worst_invariance = 0.0;
+  for (int trial = 0; trial < 200; ++trial) {
+    const Polygon shape = random_star(rng, vertices(rng));
+    const ShapeDescriptor d = affine_shape_descriptor(shape);
+    ASSERT_TRUE(d.valid);
+    // Stretch along a random direction, shear, then a similarity and another vertex order.
+    const double t = angle(rng), k = stretch(rng), h = shear(rng);
+    Polygon mapped;
+    for (const Point& p : shape) {
+      const Point r(std::cos(t) * p.x + std::sin(t) * p.y, -std::sin(t) * p.x + std::cos(t) * p.y);
+      const Point stretched(k * r.x + h * r.y, r.y);
+      mapped.emplace_back(std::cos(t) * stretched.x - std::sin(t) * stretched.y,
+                          std::sin(t) * stretched.x + std::cos(t) * stretched.y);
+    }
+    mapped = transformed(subdivided(mapped, 3.0), angle(rng), 1.0, Point(shift(rng), shift(rng)),
+                         trial, trial % 2 == 1);
+    worst_invariance =
+        std::max(worst_invariance, shape_distance(d, affine_shape_descriptor(mapped)));
+    descriptors.push_back(d);
+  }
+  EXPECT_LT(worst_invariance, 0.03);
+  std::vector<double> unrelated;
+  for (size_t i = 0; i + 1 < descriptors.size(); i += 2) {
+    unrelated.push_back(shape_distance(descriptors[i], descriptors[i + 1]));
+  }
+  std::sort(unrelated.begin(), unrelated.end());
+  const double fifth_percentile = unrelated[unrelated.size() / 20];
+  EXPECT_GT(fifth_percentile, 2.0 * worst_invariance)
+      << "5th percentile " << fifth_percentile << ", worst invariance " << worst_invariance;
+}
+
 }  // namespace
 }  // namespace scbt

@@ -8,9 +8,6 @@ namespace scbt {
 namespace {
 
 constexpr int kOutlineSamples = 64;
-// Scales are tried in steps of this ratio: the search around a placement follows the outline
-// within the tracker's filter band, so a few per cent of size between steps is found anyway.
-constexpr double kScaleStep = 1.1;
 
 // Points every perimeter / kOutlineSamples along the closed outline, relative to `center`.
 std::vector<Point> outline_samples(const Polygon& outline, const Point& center) {
@@ -40,6 +37,24 @@ struct Scored {
 };
 
 }  // namespace
+
+Polygon foreshortened(const Polygon& outline, double factor) {
+  std::vector<cv::Point2f> contour;
+  for (const Point& p : outline) contour.emplace_back(p);
+  const cv::Moments m = cv::moments(contour);
+  if (!(std::abs(m.m00) > 0.0)) return outline;
+  const Point center(m.m10 / m.m00, m.m01 / m.m00);
+  // The minor axis is perpendicular to the major one, at 0.5 atan2(2 mu11, mu20 - mu02).
+  const double angle = 0.5 * std::atan2(2.0 * m.mu11, m.mu20 - m.mu02);
+  const Point minor(-std::sin(angle), std::cos(angle));
+  Polygon out;
+  out.reserve(outline.size());
+  for (const Point& p : outline) {
+    const Point d = p - center;
+    out.push_back(p + (factor - 1.0) * d.dot(minor) * minor);
+  }
+  return out;
+}
 
 void Reacquirer::set_segments(const std::vector<Segment>& segments, cv::Size frame_size,
                               double cap) {
@@ -71,7 +86,10 @@ std::vector<Placement> Reacquirer::rank(const Polygon& outline,
   const int w = frame_size.width, h = frame_size.height;
 
   std::vector<Scored> scored;
-  for (double scale = options.min_scale; scale <= options.max_scale * 1.0001; scale *= kScaleStep) {
+  const double step = options.scale_step;
+  // Only near placements wanted: only the grid within reach of them is scored.
+  const bool near_only = options.frame_tries == 0;
+  for (double scale = options.min_scale; scale <= options.max_scale * 1.0001; scale *= step) {
     double min_x = 0, max_x = 0, min_y = 0, max_y = 0;
     for (const Point& p : samples) {
       min_x = std::min(min_x, scale * p.x), max_x = std::max(max_x, scale * p.x);
@@ -79,10 +97,12 @@ std::vector<Placement> Reacquirer::rank(const Polygon& outline,
     }
     // Centres from which up to (1 - min_inside_share) of the outline's extent leaves the frame.
     const double spill = 1.0 - options.min_inside_share;
-    const double x0 = -min_x * options.min_inside_share,
-                 x1 = w - 1 - max_x * options.min_inside_share;
-    const double y0 = -min_y * options.min_inside_share,
-                 y1 = h - 1 - max_y * options.min_inside_share;
+    double x0 = -min_x * options.min_inside_share, x1 = w - 1 - max_x * options.min_inside_share;
+    double y0 = -min_y * options.min_inside_share, y1 = h - 1 - max_y * options.min_inside_share;
+    if (near_only) {
+      x0 = std::max(x0, home.x - size), x1 = std::min(x1, home.x + size);
+      y0 = std::max(y0, home.y - size), y1 = std::min(y1, home.y + size);
+    }
     const int max_outside = static_cast<int>(spill * kOutlineSamples);
     for (double cy = y0; cy <= y1; cy += grid) {
       for (double cx = x0; cx <= x1; cx += grid) {
@@ -120,8 +140,8 @@ std::vector<Placement> Reacquirer::rank(const Polygon& outline,
       for (size_t i = 0; i < placements.size() && apart; ++i) {
         const double ratio =
             std::max(s.scale, picked_scales[i]) / std::min(s.scale, picked_scales[i]);
-        apart = cv::norm(picked_centers[i] - s.center) >= separation * s.scale ||
-                ratio > kScaleStep * 1.0001;
+        apart =
+            cv::norm(picked_centers[i] - s.center) >= separation * s.scale || ratio > step * 1.0001;
       }
       if (!apart) continue;
       Placement placement;

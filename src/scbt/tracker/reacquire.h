@@ -22,6 +22,10 @@ struct Placement {
 struct PlacementOptions {
   double min_scale = 0.75;
   double max_scale = 1.33;
+  // Scales are tried from min_scale in steps of this ratio: the search around a placement
+  // follows the outline within the tracker's filter band, so a few per cent of size between steps
+  // is found anyway.
+  double scale_step = 1.1;
   // Placements worse than this share of the cap are not worth a search.
   double max_chamfer_share = 0.8;
   // Placements are tried with at least this share of the outline inside the frame (the rest
@@ -30,6 +34,11 @@ struct PlacementOptions {
   int near_tries = 2;
   int frame_tries = 3;
 };
+
+// `outline` scaled by `factor` along the minor axis of its inertia ellipse, about its centroid: a
+// rim seen from a little lower (factor < 1: flatter) or higher (> 1: rounder). A plane turning
+// about the axis it is seen along keeps that axis and shortens the other.
+Polygon foreshortened(const Polygon& outline, double factor);
 
 class Reacquirer {
  public:

@@ -94,11 +94,27 @@ void SceneKeyframes::offer(const cv::Mat& frame, const Polygon& boundary) {
   k.described = false;
 }
 
+int SceneKeyframes::chosen_slot() const {
+  int slot = newest_;
+  if (slots_[slot].offered_at < 0 || offers_ - slots_[slot].offered_at < options_.min_age) {
+    slot = 1 - newest_;
+  }
+  if (slots_[slot].offered_at < 0) slot = newest_;
+  return slots_[slot].offered_at < 0 ? -1 : slot;
+}
+
+bool SceneKeyframes::view(cv::Mat* image, Polygon* boundary) const {
+  const int slot = chosen_slot();
+  if (slot < 0) return false;
+  *image = slots_[slot].image;
+  *boundary = slots_[slot].boundary;
+  return true;
+}
+
 std::optional<RegisteredBoundary> SceneKeyframes::locate(const cv::Mat& frame) {
-  Keyframe* k = &slots_[newest_];
-  if (k->offered_at < 0 || offers_ - k->offered_at < options_.min_age) k = &slots_[1 - newest_];
-  if (k->offered_at < 0) k = &slots_[newest_];
-  if (k->offered_at < 0) return std::nullopt;
+  const int slot = chosen_slot();
+  if (slot < 0) return std::nullopt;
+  Keyframe* k = &slots_[slot];
   cv::Ptr<cv::ORB> orb = make_orb(options_);  // cheap to make; keeps OpenCV's features2d private
   if (!k->described) {
     cv::Mat gray;

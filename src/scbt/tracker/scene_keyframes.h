@@ -52,6 +52,8 @@ class SceneKeyframes {
   // The newest keyframe at least min_age offers old (else the other) registered with `frame`
   // (8-bit grey, the whole frame): its boundary there, or nullopt.
   std::optional<RegisteredBoundary> locate(const cv::Mat& frame);
+  // The keyframe locate() registers: its image (as offered) and boundary; false when none is kept.
+  bool view(cv::Mat* image, Polygon* boundary) const;
 
  private:
   struct Keyframe {
@@ -63,6 +65,9 @@ class SceneKeyframes {
     cv::Mat descriptors;
   };
   KeyframeOptions options_;
+  // The slot locate() and view() use: the newest at least min_age offers old, else the other
+  // (-1: none kept).
+  int chosen_slot() const;
   Keyframe slots_[2];
   int newest_ = 0;
   int offers_ = 0;

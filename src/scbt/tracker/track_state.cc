@@ -63,6 +63,7 @@ void LossOptions::check() const {
       frame_tries > 100) {
     throw std::invalid_argument("near_tries and frame_tries must be in 0..100, not both 0");
   }
+  view_change.check();
 }
 
 void LossMonitor::set_confident(const Polygon& boundary, double inside_level) {

@@ -9,6 +9,7 @@
 #include "scbt/geometry/polygon.h"
 #include "scbt/geometry/shape_descriptor.h"
 #include "scbt/tracker/confidence.h"
+#include "scbt/tracker/reacquire_view_change.h"
 
 namespace scbt {
 
@@ -65,6 +66,9 @@ struct LossOptions {
   // Places tried per frame while lost: near the last position, then over the whole frame.
   int near_tries = 2;
   int frame_tries = 3;
+  // A match seen from another distance or angle (beyond the scales above, or foreshortened):
+  // taken when it also looks like the object inside (reacquire_view_change.h).
+  ViewChangeOptions view_change;
 
   // Throws std::invalid_argument naming the first bad value.
   void check() const;

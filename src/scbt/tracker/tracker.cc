@@ -37,7 +37,10 @@ Tracker::Tracker(const TrackerOptions& options)
 
 Tracker::Tracker(const TrackerOptions& options,
                  const std::function<std::unique_ptr<CycleStage>()>& make_cycle_stage)
-    : options_(options), appearance_(options.appearance), monitor_(options.loss) {
+    : options_(options),
+      appearance_(options.appearance),
+      monitor_(options.loss),
+      view_change_(options.loss.view_change) {
   options_.check();
   detector_ = make_line_detector(options_.detector);
   for (Attempt& a : attempts_) a.cycles = make_cycle_stage();

@@ -14,6 +14,7 @@
 #include "scbt/tracker/frame_checks.h"
 #include "scbt/tracker/motion_model.h"
 #include "scbt/tracker/reacquire.h"
+#include "scbt/tracker/reacquire_view_change.h"
 #include "scbt/tracker/scene_keyframes.h"
 #include "scbt/tracker/track_state.h"
 #include "scbt/tracker/tracker_options.h"
@@ -157,9 +158,10 @@ class Tracker {
   Attempt attempts_[2];
   LossMonitor monitor_;
   Reacquirer reacquirer_;
-  SceneKeyframes keyframes_;  // confident views of the object's surroundings, for the search
-  cv::Mat search_gray_;       // the whole frame in grey, while lost
-  cv::Mat cut_gray_;          // the motion reference's window in this frame (check_view_cut)
+  SceneKeyframes keyframes_;     // confident views of the object's surroundings, for the search
+  ViewChangeMatch view_change_;  // matches seen from another distance or angle, while lost
+  cv::Mat search_gray_;          // the whole frame in grey, while lost
+  cv::Mat cut_gray_;             // the motion reference's window in this frame (check_view_cut)
   // A cycle that matched while lost, waiting for LossOptions::confirm_frames matches in a row.
   Polygon pending_;
   // The output while lost: the boundary when the object was declared lost. boundary_ meanwhile

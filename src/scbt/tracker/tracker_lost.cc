@@ -25,6 +25,9 @@ double min_edge_step(const LineDetectorOptions& detector) {
 // A re-found object may be a little larger or smaller than when it was lost: the area gate of
 // the search around a placement is relaxed to this (the shape must then match).
 constexpr double kSearchSimilarity = 0.8;
+// Scale steps of the placements beyond the moderate ones: 1 / sqrt(kSearchSimilarity) = 1.12 either
+// way of a placement is within the search's area gate.
+constexpr double kCoarseScaleStep = 1.2;
 
 // How alike two views of the same window are, blur and a moderate shift aside: the best zero-mean
 // normalised correlation of the middle of `reference`, both averaged down to kThumb x kThumb,
@@ -86,6 +89,46 @@ TrackResult Tracker::track_lost(const cv::Mat& frame) {
   reacquirer_.set_segments(segments, frame_size_, 0.5 * options_.filter_distance);
   std::vector<Placement> placements =
       reacquirer_.rank(monitor_.last_confident(), placement_options);
+  // Nearer or further than the moderate scales: a few more placements, whose matches must also
+  // look like the object's last kept view (reacquire_view_change.h).
+  cv::Mat view;
+  Polygon view_boundary;
+  const ViewChangeOptions& view_change = loss.view_change;
+  size_t beyond_count = 0;  // the last placements: beyond the moderate scales
+  if (view_change.enabled && keyframes_.view(&view, &view_boundary)) {
+    // Smaller and larger apart (the chamfer distance favours small outlines in clutter), in
+    // coarser steps (each costs a scoring of the whole frame; the area gate of the search around
+    // a placement, kSearchSimilarity, still spans them).
+    PlacementOptions smaller = placement_options, larger = placement_options;
+    smaller.near_tries = larger.near_tries = 0;
+    smaller.frame_tries = larger.frame_tries = view_change.frame_tries;
+    smaller.scale_step = larger.scale_step = kCoarseScaleStep;
+    smaller.min_scale = view_change.min_scale;
+    smaller.max_scale = loss.min_scale / placement_options.scale_step;
+    larger.min_scale = loss.max_scale * placement_options.scale_step;
+    larger.max_scale = view_change.max_scale;
+    for (const PlacementOptions* band : {&larger, &smaller}) {
+      if (band->min_scale > band->max_scale) continue;
+      const std::vector<Placement> beyond = reacquirer_.rank(monitor_.last_confident(), *band);
+      placements.insert(placements.end(), beyond.begin(), beyond.end());
+      beyond_count += beyond.size();
+    }
+    // Seen from a little lower or higher: the outline flatter or rounder by the square root of
+    // the foreshortening allowed (the search band around it covers the rest), near where it was
+    // (scored there only), at the moderate scales in coarse steps.
+    PlacementOptions turned = placement_options;
+    turned.near_tries = 1;
+    turned.frame_tries = 0;
+    turned.scale_step = kCoarseScaleStep;
+    const double f = std::sqrt(view_change.max_foreshortening);
+    for (double factor : {1.0 / f, f}) {
+      const std::vector<Placement> beyond =
+          reacquirer_.rank(foreshortened(monitor_.last_confident(), factor), turned);
+      placements.insert(placements.end(), beyond.begin(), beyond.end());
+      beyond_count += beyond.size();
+    }
+  }
+  view_change_.set_reference(monitor_.last_confident(), view, view_boundary);
   // Where the scene says the object is now, and how large (a camera move or a jump while it was
   // hidden): that placement, then the best ones around it at its scale.
   const std::optional<RegisteredBoundary> registered = keyframes_.locate(search_gray_);
@@ -117,10 +160,29 @@ TrackResult Tracker::track_lost(const cv::Mat& frame) {
     Polygon cycle = a->cycles->polygon(a->graph, a->choice->index);
     const BoundaryEvidence evidence = evidence_of(*a, cycle, placement.outline);
     const double confidence = options_.confidence(evidence);
-    if (!monitor_.matches(cycle, evidence, confidence)) continue;
-    const double shape = shape_distance(shape_descriptor(cycle), monitor_.reference());
-    // Both terms are in [0, 1] for a match: how close the shape is, how sure the cycle is.
-    const double score = shape / loss.match_shape_distance + (1.0 - confidence);
+    // Beyond the moderate scales only a match that also looks like the object counts: there a
+    // small or large piece of clutter of the object's shape is far more likely than the object.
+    const bool beyond = i + beyond_count >= placements.size();
+    double shape = 0.0;
+    bool view_changed = false;
+    if (!beyond && monitor_.matches(cycle, evidence, confidence)) {
+      shape = shape_distance(shape_descriptor(cycle), monitor_.reference());
+    } else if (confidence >= loss.reacquire_confidence) {
+      // Seen from another distance or angle, and looking like the object inside.
+      const std::optional<double> d =
+          view_change_.distance(frame, cycle, loss.match_shape_distance);
+      if (!d) continue;
+      shape = *d;
+      view_changed = true;
+    } else {
+      continue;
+    }
+    // Both terms are in [0, 1] for a match: how close the shape is, how sure the cycle is. A
+    // match seen from another distance or angle comes after every ordinary one: an object rarely
+    // changes its size or its view much while out of sight, and the inside of a see-through or
+    // plain object looks much like a smaller cycle within it.
+    const double score =
+        shape / loss.match_shape_distance + (1.0 - confidence) + (view_changed ? 2.0 : 0.0);
     if (!match.empty() && score >= best_score) continue;
     best_score = score;
     result.evidence = evidence;
@@ -131,7 +193,7 @@ TrackResult Tracker::track_lost(const cv::Mat& frame) {
     match = std::move(cycle);
     match_graph_ = a->graph;
     match_kept_ = static_cast<int>(a->kept.size());
-    if (i == 0 && !pending_.empty()) break;
+    if (i == 0 && !pending_.empty() && !view_changed) break;
   }
   result.num_detected = static_cast<int>(segments.size());
   if (keep_debug_) debug_.detected = segments;
