@@ -126,6 +126,8 @@ int main(int argc, char** argv) {
   app.add_option("--confirm-motion", options.confirm_motion);
   app.add_option("--min-motion-agreement", options.min_motion_agreement);
   app.add_option("--adaptive-thresholds", options.adaptive_thresholds.enabled);
+  app.add_option("--retry-weak-frames", options.adaptive_thresholds.retry_weak_frames);
+  app.add_option("--keep-retry-winner", options.adaptive_thresholds.keep_retry_winner);
   app.add_option("--boundary-fraction", options.adaptive_thresholds.boundary_fraction);
   app.add_option("--noise-deviations", options.adaptive_thresholds.noise_deviations);
   app.add_option("--smooth-noise", options.adaptive_thresholds.smooth_noise);

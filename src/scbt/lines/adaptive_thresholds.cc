@@ -129,6 +129,13 @@ double boundary_edge_strength(const cv::Mat& gray, cv::Point offset, const Polyg
   return strengths[strengths.size() / 2];
 }
 
+double smoothing_for_noise(double noise_sigma, const AdaptiveThresholdOptions& options) {
+  // White noise smoothed by a Gaussian of sigma s keeps sigma_n / (2 sqrt(pi) s) of its deviation.
+  const double smoothing = noise_sigma / (2.0 * std::sqrt(CV_PI) * options.smoothed_noise);
+  // Below 0.5 px a Gaussian hardly smooths: EDLines' own suffices.
+  return smoothing >= 0.5 ? std::min(smoothing, 4.0) : 0.0;
+}
+
 EdgeThresholds adapt_edge_thresholds(const cv::Mat& gray, cv::Point offset, const Polygon& boundary,
                                      int gradient, int anchor,
                                      const AdaptiveThresholdOptions& options) {
@@ -149,11 +156,9 @@ const cv::Mat& adapt_to_frame(const cv::Mat& gray, cv::Point offset, const Polyg
   if (!options.enabled) return gray;
   t.noise_sigma = estimate_noise_sigma(gray);
   const cv::Mat* image = &gray;
-  // White noise smoothed by a Gaussian of sigma s keeps sigma_n / (2 sqrt(pi) s) of its deviation.
-  const double smoothing = t.noise_sigma / (2.0 * std::sqrt(CV_PI) * options.smoothed_noise);
-  // Below 0.5 px a Gaussian hardly smooths: EDLines' own suffices.
-  if (options.smooth_noise && smoothed != nullptr && smoothing >= 0.5) {
-    t.pre_smoothing = std::min(smoothing, 4.0);
+  const double smoothing = smoothing_for_noise(t.noise_sigma, options);
+  if (options.smooth_noise && smoothed != nullptr && smoothing > 0.0) {
+    t.pre_smoothing = smoothing;
     cv::GaussianBlur(gray, *smoothed, cv::Size(), t.pre_smoothing, t.pre_smoothing,
                      cv::BORDER_REFLECT_101 | cv::BORDER_ISOLATED);
     image = smoothed;

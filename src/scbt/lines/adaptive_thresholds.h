@@ -14,7 +14,18 @@
 namespace scbt {
 
 struct AdaptiveThresholdOptions {
+  // On every frame. Off by default: lowering the thresholds where the published ones work lets
+  // clutter into the band (docs/robustness-to-camera.md).
   bool enabled = false;
+  // Only on a weak frame (when `enabled` is off): a frame whose search with the published
+  // thresholds finds no boundary, or one below the tracking confidence, is searched again with
+  // the adapted thresholds (and smoothing, below), and the more confident boundary of the two is
+  // kept. A video the published thresholds serve is tracked exactly as without adaptation.
+  bool retry_weak_frames = true;
+  // ... and the setting (published or adapted) that won a weak frame's retry is the one tried
+  // first on the next frames, the other one being the retry: a dim or noisy video then runs one
+  // search per frame again, and switches back when the published thresholds win a weak frame.
+  bool keep_retry_winner = true;
   // The gradient threshold may drop to this fraction of the boundary's median edge strength.
   double boundary_fraction = 0.5;
   // ... but stays at least this many standard deviations of the gradient that noise alone gives.
@@ -25,7 +36,7 @@ struct AdaptiveThresholdOptions {
   // (sigma 1) was made for, the window is first smoothed with the Gaussian that leaves about
   // `smoothed_noise` grey levels of white noise (sigma_n / (2 sqrt(pi) s)), so that edge walks
   // follow the boundary instead of noise ridges.
-  bool smooth_noise = false;
+  bool smooth_noise = true;
   double smoothed_noise = 2.0;
 
   // Throws std::invalid_argument naming the first bad value.
@@ -61,6 +72,10 @@ EdgeThresholds adapt_edge_thresholds(const cv::Mat& gray, cv::Point offset, cons
 const cv::Mat& adapt_to_frame(const cv::Mat& gray, cv::Point offset, const Polygon& boundary,
                               int gradient, int anchor, const AdaptiveThresholdOptions& options,
                               cv::Mat* smoothed, EdgeThresholds* thresholds);
+
+// The sigma (px) of the Gaussian applied before detection for noise of `noise_sigma` grey levels
+// (AdaptiveThresholdOptions::smooth_noise; 0: none needed).
+double smoothing_for_noise(double noise_sigma, const AdaptiveThresholdOptions& options);
 
 // Standard deviation of EDLines' |gx| (Sobel after its 5x5 Gaussian) for unit white noise.
 double edlines_gradient_noise_gain();

@@ -60,6 +60,7 @@ void Tracker::init(const cv::Mat& frame, const Polygon& polygon) {
   frame_size_ = frame.size();
   motion_.reset();
   motion_.update(boundary_);
+  adapted_first_ = false;
   appearance_.remember(frame, boundary_);
   monitor_.reset(polygon, sample_edges(polygon, reference_gray_, {0, 0}, 0.0).inside_level);
   pending_.clear();
@@ -67,10 +68,11 @@ void Tracker::init(const cv::Mat& frame, const Polygon& polygon) {
   keyframes_.clear();
 }
 
-void Tracker::attempt(const cv::Mat& frame, const Polygon& prior, Attempt* a,
-                      double min_similarity) {
+void Tracker::attempt(const cv::Mat& frame, const Polygon& prior, Attempt* a, double min_similarity,
+                      bool adapt) {
   a->num_dropped = 0;
   a->choice.reset();
+  a->assessed = false;
   const Clock::time_point line_start = Clock::now();
   // Only segments near the prior boundary can survive the distance filter, so only the window
   // around it is converted and searched (crop_to_boundary; whole frame otherwise).
@@ -82,7 +84,16 @@ void Tracker::attempt(const cv::Mat& frame, const Polygon& prior, Attempt* a,
   }
   to_gray(frame(a->roi), &gray_);
   const cv::Mat* detect_on = &gray_;
-  if (options_.adaptive_thresholds.enabled && detector_->adapts_thresholds()) {
+  if (adapt) {
+    // Thresholds (and smoothing) for this window only
+    // (AdaptiveThresholdOptions::retry_weak_frames).
+    AdaptiveThresholdOptions this_window = options_.adaptive_thresholds;
+    this_window.enabled = true;
+    detect_on = &adapt_to_frame(gray_, a->roi.tl(), prior, options_.detector.gradient_threshold,
+                                options_.detector.anchor_threshold, this_window, &smoothed_gray_,
+                                &a->thresholds);
+    detector_->set_edge_thresholds(a->thresholds.gradient, a->thresholds.anchor);
+  } else if (options_.adaptive_thresholds.enabled && detector_->adapts_thresholds()) {
     // Thresholds (and, for a noisy window, a smoothed copy to detect on) suited to this window.
     detect_on = &adapt_to_frame(gray_, a->roi.tl(), prior, options_.detector.gradient_threshold,
                                 options_.detector.anchor_threshold, options_.adaptive_thresholds,
@@ -95,6 +106,10 @@ void Tracker::attempt(const cv::Mat& frame, const Polygon& prior, Attempt* a,
                                          options_.filter_distance + options_.detector.roi_padding);
   } else {
     a->detected = detector_->detect_in(*detect_on, a->roi.tl(), frame_size_);
+  }
+  if (adapt) {
+    detector_->set_edge_thresholds(options_.detector.gradient_threshold,
+                                   options_.detector.anchor_threshold);
   }
   a->line_ms = elapsed_ms(line_start);
 
@@ -173,10 +188,14 @@ Tracker::Attempt* Tracker::search(const cv::Mat& frame, TrackResult* result) {
   } else {
     predicted_ = boundary_;
   }
-  attempt(frame, predicted_, a, options_.min_area_similarity);
+  const bool retry_weak_frames = options_.adaptive_thresholds.retry_weak_frames &&
+                                 !options_.adaptive_thresholds.enabled &&
+                                 detector_->adapts_thresholds();
+  attempt(frame, predicted_, a, options_.min_area_similarity, retry_weak_frames && adapted_first_);
   result->line_ms = a->line_ms;
   result->grouping_ms = a->grouping_ms;
   result->stages = a->stages;
+  if (retry_weak_frames) a = retry_weak(frame, a, result);
 
   // No candidate within the area gate of the last boundary: at a low frame rate an object
   // approaching or receding fast grows or shrinks by more than the gate between frames. Search
@@ -221,6 +240,47 @@ Tracker::Attempt* Tracker::search(const cv::Mat& frame, TrackResult* result) {
   return a;
 }
 
+void Tracker::assess(Attempt* a, const Polygon& previous) const {
+  a->assessed = true;
+  if (!a->choice) return;
+  a->boundary = a->cycles->polygon(a->graph, a->choice->index);
+  a->evidence = evidence_of(*a, a->boundary, previous);
+  a->confidence = options_.confidence(a->evidence);
+}
+
+Tracker::Attempt* Tracker::retry_weak(const cv::Mat& frame, Attempt* first, TrackResult* result) {
+  assess(first, boundary_);
+  if (first->choice && first->confidence >= options_.loss.tracking_confidence) return first;
+  const bool first_adapted = adapted_first_;
+  if (!first_adapted) {
+    // A dim or blurred frame's boundary falls below the published thresholds, a noisy frame's
+    // breaks into fragments: is there anything lower (or smoother) to look with?
+    EdgeThresholds thresholds;
+    AdaptiveThresholdOptions this_window = options_.adaptive_thresholds;
+    this_window.enabled = true;
+    this_window.smooth_noise = false;
+    adapt_to_frame(gray_, first->roi.tl(), predicted_, options_.detector.gradient_threshold,
+                   options_.detector.anchor_threshold, this_window, nullptr, &thresholds);
+    const bool smooths =
+        options_.adaptive_thresholds.smooth_noise &&
+        smoothing_for_noise(thresholds.noise_sigma, options_.adaptive_thresholds) > 0.0;
+    if (thresholds.gradient >= options_.detector.gradient_threshold && !smooths) return first;
+  } else if (first->thresholds.gradient >= options_.detector.gradient_threshold &&
+             first->thresholds.pre_smoothing == 0.0) {
+    return first;  // the adapted search was the published one
+  }
+  Attempt* retry = &attempts_[1];
+  attempt(frame, predicted_, retry, options_.min_area_similarity, !first_adapted);
+  add_retry_times(*retry, result);
+  assess(retry, boundary_);
+  if (retry->choice && (!first->choice || retry->confidence > first->confidence)) {
+    if (options_.adaptive_thresholds.keep_retry_winner) adapted_first_ = !first_adapted;
+    return retry;
+  }
+  // The retry converted the same window into gray_: the first attempt's evidence stays valid.
+  return first;
+}
+
 TrackResult Tracker::track(const cv::Mat& frame) {
   if (!initialized()) throw std::logic_error("Tracker::track called before init");
   if (frame.empty()) to_gray(frame, &gray_);  // throws
@@ -230,12 +290,12 @@ TrackResult Tracker::track(const cv::Mat& frame) {
   Attempt* a = search(frame, &result);
 
   if (a->choice) {
-    Polygon chosen = a->cycles->polygon(a->graph, a->choice->index);
     // Before the grey window is handed to the motion reference, and against the previous boundary.
-    result.evidence = evidence_of(*a, chosen, boundary_);
-    result.confidence = options_.confidence(result.evidence);
+    if (!a->assessed) assess(a, boundary_);
+    result.evidence = a->evidence;
+    result.confidence = a->confidence;
     check_view_cut(frame, result);  // before the motion reference moves on
-    boundary_ = std::move(chosen);
+    boundary_ = std::move(a->boundary);
     boundary_area_ = a->cycles->area(a->choice->index);
     result.cost = a->choice->cost;
     result.area_similarity = a->choice->similarity;

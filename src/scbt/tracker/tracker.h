@@ -123,12 +123,26 @@ class Tracker {
     double line_ms = 0.0;
     double grouping_ms = 0.0;
     StageTimes stages;
+    // Filled by assess(): the chosen cycle, its evidence and confidence.
+    bool assessed = false;
+    Polygon boundary;
+    BoundaryEvidence evidence;
+    double confidence = 0.0;
   };
-  void attempt(const cv::Mat& frame, const Polygon& prior, Attempt* a, double min_similarity);
+  // `adapt`: with thresholds (and smoothing) adapted to this window (retry_weak).
+  void attempt(const cv::Mat& frame, const Polygon& prior, Attempt* a, double min_similarity,
+               bool adapt = false);
   // A tracking frame's search around the boundary: where it is (or its motion predicts it), then
   // with its predicted growth, then where the image moved it. Returns the attempt to use (its
   // choice empty when nothing qualified); `result` gets the times.
   Attempt* search(const cv::Mat& frame, TrackResult* result);
+  // Attempt a's chosen cycle (if any), its evidence against `previous` and its confidence; the
+  // grey window gray_ must still be a's.
+  void assess(Attempt* a, const Polygon& previous) const;
+  // AdaptiveThresholdOptions::retry_weak_frames: `first` or, when it was weak, the search again
+  // with the other thresholds (adapted or published) if that found a more confident boundary.
+  Attempt* retry_weak(const cv::Mat& frame, Attempt* first, TrackResult* result);
+  bool adapted_first_ = false;  // the first search of a frame uses adapted thresholds
   // Whether `moved` (a predicted placement of the boundary) agrees with its appearance better
   // than `unmoved` does, and at least by TrackerOptions::min_motion_agreement.
   bool confirmed(const cv::Mat& frame, const Polygon& moved, const Polygon& unmoved);
