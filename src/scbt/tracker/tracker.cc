@@ -273,7 +273,10 @@ Tracker::Attempt* Tracker::retry_weak(const cv::Mat& frame, Attempt* first, Trac
   attempt(frame, predicted_, retry, options_.min_area_similarity, !first_adapted);
   add_retry_times(*retry, result);
   assess(retry, boundary_);
-  if (retry->choice && (!first->choice || retry->confidence > first->confidence)) {
+  // Only a trusted boundary replaces the first search's: lowered thresholds find some closed cycle
+  // in almost any textured window, and a held frame (or a motion recovery) is better than that.
+  if (retry->choice && retry->confidence >= options_.loss.tracking_confidence &&
+      (!first->choice || retry->confidence > first->confidence)) {
     if (options_.adaptive_thresholds.keep_retry_winner) adapted_first_ = !first_adapted;
     return retry;
   }
