@@ -188,9 +188,11 @@ Tracker::Attempt* Tracker::search(const cv::Mat& frame, TrackResult* result) {
   } else {
     predicted_ = boundary_;
   }
-  const bool retry_weak_frames = options_.adaptive_thresholds.retry_weak_frames &&
-                                 !options_.adaptive_thresholds.enabled &&
-                                 detector_->adapts_thresholds();
+  // Not while lost: the search there (tracker_resume.cc) asks for the last confident shape, which
+  // the published thresholds found; lowered ones invite a different cycle in its place.
+  const bool retry_weak_frames =
+      options_.adaptive_thresholds.retry_weak_frames && !options_.adaptive_thresholds.enabled &&
+      detector_->adapts_thresholds() && monitor_.state() != TrackState::kLost;
   attempt(frame, predicted_, a, options_.min_area_similarity, retry_weak_frames && adapted_first_);
   result->line_ms = a->line_ms;
   result->grouping_ms = a->grouping_ms;
