@@ -5,11 +5,11 @@
 #include <gtest/gtest.h>
 
 #include <opencv2/imgproc.hpp>
-#include <sstream>
 #include <tuple>
 
 #include "scbt/synthetic/scene.h"
 #include "scbt/tracker/tracker.h"
+#include "scbt/tracker/tracker_test_util.h"
 
 namespace scbt {
 namespace {
@@ -74,20 +74,10 @@ CutRun track_cut_scene(SceneShape shape, std::uint32_t seed, double scale, Point
   return run;
 }
 
-std::string describe(const CutRun& run) {
-  std::ostringstream out;
-  for (size_t k = 1; k < run.results.size(); ++k) {
-    const TrackResult& r = run.results[k];
-    out << k << ":" << to_string(r.state)[0] << "/" << static_cast<int>(100 * r.confidence) << "/"
-        << static_cast<int>(mean_boundary_distance(r.boundary, run.frames[k].truth)) << " ";
-  }
-  return out.str();
-}
-
 // Lost within a few frames of the cut, never `tracking` on a wrong boundary, and `tracking`
 // again on the object within `within` frames of the cut, then a mean error under 2 px.
 void expect_lost_and_found(const CutRun& run, int within) {
-  SCOPED_TRACE(describe(run));
+  SCOPED_TRACE(describe_run(run.results, run.frames));
   int first_lost = -1, found = -1;
   for (int k = kCut; k < kFrames; ++k) {
     const TrackResult& r = run.results[k];

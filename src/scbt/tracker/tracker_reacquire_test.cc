@@ -10,11 +10,11 @@
 #include <gtest/gtest.h>
 
 #include <opencv2/imgproc.hpp>
-#include <sstream>
 #include <tuple>
 
 #include "scbt/synthetic/scene.h"
 #include "scbt/tracker/tracker.h"
+#include "scbt/tracker/tracker_test_util.h"
 
 namespace scbt {
 namespace {
@@ -77,16 +77,6 @@ void track(ReturnRun* run, const TrackerOptions& options = {}) {
   for (int k = 1; k < kFrames; ++k) run->results.push_back(tracker.track(run->frames[k].image));
 }
 
-std::string describe(const ReturnRun& run) {
-  std::ostringstream out;
-  for (size_t k = 1; k < run.results.size(); ++k) {
-    const TrackResult& r = run.results[k];
-    out << k << ":" << to_string(r.state)[0] << "/" << static_cast<int>(100 * r.confidence) << "/"
-        << static_cast<int>(mean_boundary_distance(r.boundary, run.frames[k].truth)) << " ";
-  }
-  return out.str();
-}
-
 class TrackerReacquireTest
     : public ::testing::TestWithParam<std::tuple<SceneShape, std::uint32_t, Return>> {};
 
@@ -96,7 +86,7 @@ TEST_P(TrackerReacquireTest, FoundAgainNearerOrAtAnotherAngle) {
   const auto [shape, seed, how] = GetParam();
   ReturnRun run = render_run(shape, seed, how, false);
   track(&run);
-  SCOPED_TRACE(describe(run));
+  SCOPED_TRACE(describe_run(run.results, run.frames));
   const int back = kVisible + kGap;
   EXPECT_EQ(run.results[back - 1].state, TrackState::kLost);
   int found = -1;
@@ -122,7 +112,7 @@ TEST_P(TrackerReacquireTest, ALookAlikeOfAnotherGreyIsNotTaken) {
   const auto [shape, seed, how] = GetParam();
   ReturnRun run = render_run(shape, seed, how, true);
   track(&run);
-  SCOPED_TRACE(describe(run));
+  SCOPED_TRACE(describe_run(run.results, run.frames));
   for (int k = kVisible + kGap; k < kFrames; ++k) {
     EXPECT_NE(run.results[k].state, TrackState::kTracking) << "frame " << k;
   }
