@@ -13,6 +13,16 @@ namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 
+// The 5th percentile of the distances between descriptors 0-1, 2-3, ... (unrelated random shapes).
+double unrelated_fifth_percentile(const std::vector<ShapeDescriptor>& descriptors) {
+  std::vector<double> unrelated;
+  for (size_t i = 0; i + 1 < descriptors.size(); i += 2) {
+    unrelated.push_back(shape_distance(descriptors[i], descriptors[i + 1]));
+  }
+  std::sort(unrelated.begin(), unrelated.end());
+  return unrelated[unrelated.size() / 20];
+}
+
 // A star-shaped polygon around the origin: n vertices at increasing angles with random radii.
 Polygon random_star(std::mt19937& rng, int n) {
   std::uniform_real_distribution<double> radius(40.0, 100.0), jitter(0.1, 0.9);
@@ -102,13 +112,8 @@ TEST(ShapeDescriptorTest, InvariantToSimilarityAndVertexOrderOverRandomShapes) {
     descriptors.push_back(d);
   }
   EXPECT_LT(worst_invariance, 0.02);
-  std::vector<double> unrelated;
-  for (size_t i = 0; i + 1 < descriptors.size(); i += 2) {
-    unrelated.push_back(shape_distance(descriptors[i], descriptors[i + 1]));
-  }
-  std::sort(unrelated.begin(), unrelated.end());
   // Nearly every pair of unrelated random shapes is further apart than any transformed copy.
-  const double fifth_percentile = unrelated[unrelated.size() / 20];
+  const double fifth_percentile = unrelated_fifth_percentile(descriptors);
   EXPECT_GT(fifth_percentile, 2.0 * worst_invariance)
       << "5th percentile " << fifth_percentile << ", worst invariance " << worst_invariance;
 }
@@ -169,12 +174,7 @@ TEST(AffineShapeDescriptorTest, InvariantToAffineMapsOverRandomShapes) {
     descriptors.push_back(d);
   }
   EXPECT_LT(worst_invariance, 0.03);
-  std::vector<double> unrelated;
-  for (size_t i = 0; i + 1 < descriptors.size(); i += 2) {
-    unrelated.push_back(shape_distance(descriptors[i], descriptors[i + 1]));
-  }
-  std::sort(unrelated.begin(), unrelated.end());
-  const double fifth_percentile = unrelated[unrelated.size() / 20];
+  const double fifth_percentile = unrelated_fifth_percentile(descriptors);
   EXPECT_GT(fifth_percentile, 2.0 * worst_invariance)
       << "5th percentile " << fifth_percentile << ", worst invariance " << worst_invariance;
 }
