@@ -16,6 +16,13 @@ RegionHistogram region_histogram(const cv::Mat& image, const Polygon& boundary) 
   for (cv::Point& p : points) p -= box.tl();
   cv::fillPoly(mask, std::vector<std::vector<cv::Point>>{points}, 255);
   cv::erode(mask, mask, cv::getStructuringElement(cv::MORPH_RECT, cv::Size(5, 5)));
+  const Point middle = centroid(boundary);
+  std::vector<cv::Point> inner;
+  for (const Point& p : boundary) {
+    const Point q = middle + (p - middle) * kAppearanceBandInnerScale;
+    inner.emplace_back(cvRound(q.x) - box.x, cvRound(q.y) - box.y);
+  }
+  cv::fillPoly(mask, std::vector<std::vector<cv::Point>>{inner}, 0);
   const cv::Mat window = image(box);
   const int channels = image.channels();
   const bool colour = channels >= 3;

@@ -1,5 +1,5 @@
-// The colour histogram inside a boundary: the same object larger, turned or elsewhere looks the
-// same; another colour, or another grey, does not.
+// The colour histogram of the band inside a boundary: the same object larger, turned, elsewhere
+// or with other contents looks the same; another colour, or another grey, does not.
 #include "scbt/tracker/reacquire_appearance.h"
 
 #include <gtest/gtest.h>
@@ -39,6 +39,19 @@ TEST(ReacquireAppearanceTest, TheSameObjectElsewhereAndLargerLooksTheSame) {
   // The background's colour inside the same outline: nothing in common.
   const RegionHistogram elsewhere = region_histogram(image, square({160, 40}, 15));
   EXPECT_LT(histogram_similarity(a, elsewhere), 0.1);
+}
+
+TEST(ReacquireAppearanceTest, OtherContentsInsideTheSameWallLookTheSame) {
+  // A white cup with tea in it, and the same cup emptied and seen smaller elsewhere: the middle
+  // (0.7 of the size: half the area) changes colour, the wall does not.
+  cv::Mat image(240, 320, CV_8UC3, cv::Scalar(40, 90, 60));
+  const Polygon full = square({80, 80}, 50), empty = square({230, 150}, 35);
+  fill(&image, full, cv::Scalar(235, 235, 235));
+  fill(&image, square({80, 80}, 35), cv::Scalar(20, 60, 110));
+  fill(&image, empty, cv::Scalar(235, 235, 235));
+  fill(&image, square({230, 150}, 24.5), cv::Scalar(180, 190, 200));
+  EXPECT_GT(histogram_similarity(region_histogram(image, full), region_histogram(image, empty)),
+            0.95);
 }
 
 TEST(ReacquireAppearanceTest, GreyImagesCompareGreyLevels) {
