@@ -3,6 +3,7 @@
 // a temporary folder, the built binary tracks it, and the CSV's centroids and normals are
 // compared with the scene's truth. Bad depth inputs must fail with one clear error line.
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <cmath>
 #include <cstdio>
@@ -12,6 +13,7 @@
 #include <opencv2/imgcodecs.hpp>
 #include <sstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "cli_test_util.h"
@@ -24,9 +26,20 @@ namespace {
 
 namespace fs = std::filesystem;
 
+// Its folder is removed with it (the process id in its name leaves nothing shared to clean).
 struct Clip {
   fs::path dir;
   std::vector<Eigen::Vector3d> centres, normals;
+
+  Clip() = default;
+  Clip(Clip&& other) noexcept
+      : dir(std::exchange(other.dir, {})),
+        centres(std::move(other.centres)),
+        normals(std::move(other.normals)) {}
+  ~Clip() {
+    std::error_code ignored;
+    if (!dir.empty()) fs::remove_all(dir, ignored);
+  }
 };
 
 std::string number_name(int i) {
@@ -40,7 +53,7 @@ std::string number_name(int i) {
 Clip write_clip() {
   Clip clip;
   clip.dir = fs::path(testing::TempDir()) /
-             ("scbt_cli_depth_" +
+             ("scbt_cli_depth_" + std::to_string(::getpid()) + "_" +
               std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
   fs::remove_all(clip.dir);
   for (const char* sub : {"colour", "depth", "tum/rgb", "tum/depth"})

@@ -5,6 +5,7 @@
 // accuracy loss shows up here. (MarkCup's .976 equals the straightforward pipeline's, whole-frame
 // OpenCV EDLines; with OpenCV's detector on the window it was .994.)
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <cstdlib>
 #include <filesystem>
@@ -30,7 +31,9 @@ TEST(DatasetRegression, SuccessAt10PxStaysAboveFloors) {
   EvalRunOptions options;
   options.dataset = dataset;
   options.trackers = {"bdsp"};
-  options.out = (std::filesystem::path(::testing::TempDir()) / "scbt_dataset_regression").string();
+  options.out = (std::filesystem::path(::testing::TempDir()) /
+                 ("scbt_dataset_regression_" + std::to_string(::getpid())))
+                    .string();
   options.quiet = true;
   options.plot = false;
   std::ostringstream log;
@@ -46,6 +49,8 @@ TEST(DatasetRegression, SuccessAt10PxStaysAboveFloors) {
               << floor->second << "), mean E_AL " << score.errors.mean << "\n";
   }
   EXPECT_EQ(checked, static_cast<int>(floors.size())) << "sequences missing from the dataset";
+  std::error_code ignored;
+  std::filesystem::remove_all(options.out, ignored);
 }
 
 }  // namespace

@@ -1,6 +1,7 @@
 #include "scbt/depth/camera_info.h"
 
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <cstdio>
 #include <fstream>
@@ -12,7 +13,8 @@ namespace scbt {
 namespace {
 
 std::string write_temp(const std::string& name, const std::string& text) {
-  const std::string path = testing::TempDir() + name;
+  // The process id keeps concurrent test runs (two build folders) out of each other's files.
+  const std::string path = testing::TempDir() + std::to_string(::getpid()) + "_" + name;
   std::ofstream(path) << text;
   return path;
 }
@@ -46,7 +48,8 @@ rectification_matrix:
 }
 
 TEST(CameraInfo, ReadsOpenCvCalibrationFile) {
-  const std::string path = testing::TempDir() + "opencv_calibration.yml";
+  const std::string path =
+      testing::TempDir() + std::to_string(::getpid()) + "_opencv_calibration.yml";
   {
     cv::FileStorage storage(path, cv::FileStorage::WRITE);
     storage << "camera_matrix" << (cv::Mat_<double>(3, 3) << 600, 0, 330, 0, 601, 250, 0, 0, 1);

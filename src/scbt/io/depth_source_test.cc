@@ -1,6 +1,7 @@
 #include "scbt/io/depth_source.h"
 
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <cstdint>
 #include <filesystem>
@@ -13,7 +14,8 @@ namespace {
 namespace fs = std::filesystem;
 
 fs::path fresh_folder(const std::string& name) {
-  const fs::path folder = fs::path(testing::TempDir()) / name;
+  // The process id keeps concurrent test runs (two build folders) out of each other's files.
+  const fs::path folder = fs::path(testing::TempDir()) / (std::to_string(::getpid()) + "_" + name);
   fs::remove_all(folder);
   fs::create_directories(folder);
   return folder;
