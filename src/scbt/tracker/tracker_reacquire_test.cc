@@ -3,7 +3,8 @@
 // foreshortened (its outline squashed to 0.7 of its height: a rim seen more obliquely). The
 // background stays (the scene registers unchanged, so it says nothing of the object's new place or
 // size). And a look-alike of the same shape but of another grey, where the object does not come
-// back, must not be taken: it is taken only when the appearance check is switched off.
+// back, must not be taken: it is taken only when the appearance check is switched off. A
+// container emptied or filled while away (its middle another grey) is still the object.
 // Rims and boxes: a random star polygon's narrow spikes are tracked cut short at one size and
 // resolved at 1.6 times it, which changes its shape descriptor beyond the match (0.07 against the
 // bar of 0.05 for seed 1): a limit of the shape test, not of the search (docs/loss-handling.md).
@@ -37,9 +38,22 @@ Polygon squashed(const Polygon& model, double height) {
   return out;
 }
 
+// The middle of `outline` (0.7 of its size about its centroid: half its area) painted `level`.
+void paint_middle(cv::Mat* image, const Polygon& outline, int level) {
+  const Point middle = centroid(outline);
+  std::vector<cv::Point> points;
+  for (const Point& p : outline) {
+    const Point q = middle + (p - middle) * 0.7;
+    points.emplace_back(cvRound(q.x), cvRound(q.y));
+  }
+  cv::fillPoly(*image, std::vector<std::vector<cv::Point>>{points}, cv::Scalar::all(level));
+}
+
 // The object drifts, the frames go blank, then the object (or, with `decoy`, a look-alike in a grey
-// 100 levels darker) is seen elsewhere, larger or flatter.
-ReturnRun render_run(SceneShape shape, std::uint32_t seed, Return how, bool decoy) {
+// 100 levels darker; with `other_contents`, the object with its middle 100 levels darker) is seen
+// elsewhere, larger or flatter.
+ReturnRun render_run(SceneShape shape, std::uint32_t seed, Return how, bool decoy,
+                     bool other_contents = false) {
   SceneOptions scene;
   scene.seed = seed;
   scene.shape = shape;
@@ -65,6 +79,9 @@ ReturnRun render_run(SceneShape shape, std::uint32_t seed, Return how, bool deco
     } else {
       run.frames.push_back(render_frame(decoy ? look_alike : scene, background, returning,
                                         after[k - kVisible - kGap], k));
+      if (other_contents) {
+        paint_middle(&run.frames.back().image, run.frames.back().truth, scene.object_level - 100);
+      }
     }
   }
   return run;
@@ -103,6 +120,22 @@ TEST_P(TrackerReacquireTest, FoundAgainNearerOrAtAnotherAngle) {
     sum += mean_boundary_distance(run.results[k].boundary, run.frames[k].truth);
   }
   EXPECT_LT(sum / (kFrames - found), 2.0);
+}
+
+// The object comes back with other contents (its middle darker: emptied, or filled) and, larger,
+// is found by the view-change match, whose appearance is the band inside the boundary.
+TEST_P(TrackerReacquireTest, FoundAgainWithOtherContents) {
+  const auto [shape, seed, how] = GetParam();
+  ReturnRun run = render_run(shape, seed, how, false, true);
+  track(&run);
+  SCOPED_TRACE(describe_run(run.results, run.frames));
+  int found = -1;
+  for (int k = kVisible + kGap; k < kFrames && found < 0; ++k) {
+    if (run.results[k].state == TrackState::kTracking) found = k;
+  }
+  ASSERT_GE(found, 0);
+  EXPECT_LE(found, kVisible + kGap + 5);
+  EXPECT_LT(mean_boundary_distance(run.results.back().boundary, run.frames.back().truth), 2.0);
 }
 
 // The look-alike (the object's outline, larger or flatter, darker inside) is never `tracking`;
