@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 
 namespace scbt {
@@ -66,23 +67,53 @@ void LossOptions::check() const {
   view_change.check();
 }
 
-void LossMonitor::set_confident(const Polygon& boundary, double inside_level) {
-  last_confident_ = boundary;
-  reference_ = shape_descriptor(boundary);
-  if (inside_level >= 0.0) reference_level_ = inside_level;
-  Confident& slot = history_[history_next_];
-  slot.boundary = boundary;  // reuses the slot's buffer
-  slot.descriptor = reference_;
-  slot.level = reference_level_;
-  history_next_ = (history_next_ + 1) % kHistory;
-  history_size_ = std::min(history_size_ + 1, kHistory);
+void LossMonitor::add_confident(const Polygon& boundary, double inside_level, double confidence) {
+  const int slot = kept_next_;
+  Confident& added = kept_[slot];
+  added.boundary = boundary;  // reuses the slot's buffer
+  added.descriptor = shape_descriptor(boundary);
+  // An unknown level keeps the last known one.
+  added.level = inside_level >= 0.0 ? inside_level : last_confident_.level;
+  added.confidence = confidence;
+  kept_next_ = (kept_next_ + 1) % kKept;
+  kept_size_ = std::min(kept_size_ + 1, kKept);
+  // An invalid descriptor is infinitely far from any other: capped, so the sums stay comparable.
+  constexpr double kFar = 1.0;
+  for (int j = 0; j < kKept; ++j) {
+    distance_[slot][j] = distance_[j][slot] =
+        std::min(shape_distance(added.descriptor, kept_[j].descriptor), kFar);
+  }
+  // The weighted medoid; ties go to the newest (the kept frames are visited newest first).
+  int best = slot;
+  double best_sum = std::numeric_limits<double>::infinity();
+  for (int n = 0; n < kept_size_; ++n) {
+    const int i = (slot + kKept - n) % kKept;
+    double sum = 0.0;
+    for (int m = 0; m < kept_size_; ++m) {
+      const int j = (slot + kKept - m) % kKept;
+      sum += kept_[j].confidence * distance_[i][j];
+    }
+    if (sum < best_sum) {
+      best_sum = sum;
+      best = i;
+    }
+  }
+  last_confident_ = kept_[best];
+  // What a loss kLag frames later will search for: this frame's own shape (the freshest: an
+  // object turns while out of sight), unless it is an outlier of the frames around it.
+  past_references_[past_next_] =
+      distance_[slot][best] <= options_.match_shape_distance ? added : last_confident_;
+  past_next_ = (past_next_ + 1) % kLag;
+  past_size_ = std::min(past_size_ + 1, kLag);
 }
 
 void LossMonitor::reset(const Polygon& boundary, double inside_level) {
-  reference_level_ = -1.0;
-  history_size_ = 0;
-  history_next_ = 0;
-  set_confident(boundary, inside_level);
+  last_confident_.level = -1.0;
+  kept_size_ = 0;
+  kept_next_ = 0;
+  past_size_ = 0;
+  past_next_ = 0;
+  add_confident(boundary, inside_level, 1.0);
   state_ = TrackState::kTracking;
   misses_ = 0;
   unsure_ = 0;
@@ -92,11 +123,13 @@ void LossMonitor::reset(const Polygon& boundary, double inside_level) {
 bool LossMonitor::matches(const Polygon& cycle, const BoundaryEvidence& evidence, double confidence,
                           double min_confidence) const {
   if (confidence < min_confidence) return false;
-  if (reference_level_ >= 0.0 && evidence.inside_level >= 0.0 &&
-      std::abs(evidence.inside_level - reference_level_) > options_.max_level_change) {
+  const double level = last_confident_.level;
+  if (level >= 0.0 && evidence.inside_level >= 0.0 &&
+      std::abs(evidence.inside_level - level) > options_.max_level_change) {
     return false;
   }
-  return shape_distance(shape_descriptor(cycle), reference_) <= options_.match_shape_distance;
+  return shape_distance(shape_descriptor(cycle), last_confident_.descriptor) <=
+         options_.match_shape_distance;
 }
 
 TrackState LossMonitor::update(const Polygon& boundary, double confidence, bool held,
@@ -109,11 +142,8 @@ TrackState LossMonitor::update(const Polygon& boundary, double confidence, bool 
     misses_ += miss ? 1 : 0;
     const bool lost = options_.enabled &&
                       (misses_ >= options_.misses_to_lost || unsure_ >= options_.unsure_to_lost);
-    if (lost && state_ != TrackState::kLost && history_size_ > 0) {
-      const Confident& oldest = history_[(history_next_ + kHistory - history_size_) % kHistory];
-      last_confident_ = oldest.boundary;
-      reference_ = oldest.descriptor;
-      reference_level_ = oldest.level;
+    if (lost && state_ != TrackState::kLost) {
+      last_confident_ = past_references_[(past_next_ + kLag - past_size_) % kLag];
     }
     state_ = lost ? TrackState::kLost : TrackState::kUncertain;
     return state_;
@@ -121,7 +151,7 @@ TrackState LossMonitor::update(const Polygon& boundary, double confidence, bool 
   misses_ = 0;
   if (confident) {
     after_cut_ = false;
-    set_confident(boundary, evidence.inside_level);
+    add_confident(boundary, evidence.inside_level, confidence);
     state_ = TrackState::kTracking;
   } else {
     state_ = TrackState::kUncertain;

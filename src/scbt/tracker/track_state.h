@@ -25,9 +25,9 @@ struct LossOptions {
   // Off: the tracker never declares the object lost and never searches the frame (the paper's
   // behaviour); states are still reported (`uncertain` instead of `lost`).
   bool enabled = true;
-  // A frame whose boundary has at least this confidence is `tracking`; its boundary becomes the
-  // last confident one (the shape searched for when lost). The confidence falls with the change
-  // of shape since the last confident frame, so the reference follows gradual change only.
+  // A frame whose boundary has at least this confidence is `tracking`; its boundary joins the
+  // confident ones the reference shape is drawn from (LossMonitor::reference). The confidence
+  // falls with the change of shape from that reference, so it follows gradual change only.
   double tracking_confidence = 0.5;
   // A held frame, or a boundary of confidence below this, is a miss.
   double miss_confidence = 0.2;
@@ -98,14 +98,15 @@ class LossMonitor {
                double min_confidence) const;
 
   TrackState state() const { return state_; }
-  // The shape searched for while lost: the oldest of the last confident frames (see history_).
-  const Polygon& last_confident() const { return last_confident_; }
+  // The shape searched for while lost: the boundary kLag confident frames before the loss, or the
+  // reference (below) of that time when the boundary was an outlier (beyond match_shape_distance
+  // of it). While tracking: the reference's boundary.
+  const Polygon& last_confident() const { return last_confident_.boundary; }
   // The newest confident boundary: the output while lost (where the object was last seen).
-  const Polygon& latest_confident() const {
-    return history_size_ > 0 ? history_[(history_next_ + kHistory - 1) % kHistory].boundary
-                             : last_confident_;
-  }
-  const ShapeDescriptor& reference() const { return reference_; }
+  const Polygon& latest_confident() const { return kept_[newest()].boundary; }
+  // The shape the confidence compares with (BoundaryEvidence::shape_change) and a cycle found
+  // while lost must match: the confidence-weighted medoid of the last kKept confident frames.
+  const ShapeDescriptor& reference() const { return last_confident_.descriptor; }
   const LossOptions& options() const { return options_; }
   // The view was cut (LossOptions::cut_correlation): until a frame is `tracking` again, its
   // boundary must match the last confident shape; if the object is lost meanwhile, where it was
@@ -114,28 +115,39 @@ class LossMonitor {
   bool after_cut() const { return after_cut_; }
 
  private:
-  void set_confident(const Polygon& boundary, double inside_level);
+  struct Confident {
+    Polygon boundary;
+    ShapeDescriptor descriptor;
+    double level = -1.0;
+    double confidence = 1.0;
+  };
+  // The last kKept confident frames (a ring). The reference is the one of least
+  // confidence-weighted shape distance to the others: a boundary that scraped past the tracking
+  // bar once (a neighbouring cycle at 0.53) is outvoted by the frames around it instead of becoming
+  // what the next frames are measured against (and then confirmed by them at 1.0); a real change
+  // of shape takes over once it holds for most of the kept frames.
+  static constexpr int kKept = 5;
+  // The frames just before a loss are suspect (an occluder may already cover part of the object
+  // while the confidence is still high): the search uses the shape of kLag confident frames
+  // earlier.
+  static constexpr int kLag = 4;
+
+  void add_confident(const Polygon& boundary, double inside_level, double confidence);
+  int newest() const { return (kept_next_ + kKept - 1) % kKept; }
 
   LossOptions options_;
   TrackState state_ = TrackState::kTracking;
   int misses_ = 0;
   int unsure_ = 0;  // frames in a row that were not `tracking`
   bool after_cut_ = false;
-  Polygon last_confident_;
-  ShapeDescriptor reference_;
-  double reference_level_ = -1.0;
-  // The last kHistory confident frames (a ring). The frames just before a loss are suspect (an
-  // occluder may already cover part of the object while the confidence is still high), so when
-  // the object is declared lost, the oldest of them becomes the last confident boundary.
-  static constexpr int kHistory = 4;
-  struct Confident {
-    Polygon boundary;
-    ShapeDescriptor descriptor;
-    double level = -1.0;
-  };
-  std::array<Confident, kHistory> history_;
-  int history_size_ = 0;
-  int history_next_ = 0;
+  std::array<Confident, kKept> kept_;
+  double distance_[kKept][kKept] = {};  // shape distances between the kept frames
+  int kept_size_ = 0;
+  int kept_next_ = 0;
+  Confident last_confident_;  // the reference, or while lost the one kLag frames back
+  std::array<Confident, kLag> past_references_;  // a ring: the shapes to search for, per frame
+  int past_size_ = 0;
+  int past_next_ = 0;
 };
 
 }  // namespace scbt

@@ -111,6 +111,46 @@ TEST(LossMonitor, OutputIsTheNewestConfidentAndTheSearchTheOldest) {
   EXPECT_EQ(monitor.last_confident(), square(3));  // 4 confident frames back
 }
 
+// A neighbouring cycle that scrapes past the tracking bar once (0.55) must not become the shape
+// the next frames are measured against, nor the shape searched for after a loss: with the newest
+// confident boundary as the reference, its repeat was confirmed at 0.99 and the object, back in
+// its own shape, was not recognised again (tracker_reacquire_test, rim seed 1, with the retry of
+// weak frames).
+TEST(LossMonitor, OneBarelyConfidentShapeDoesNotBecomeTheReference) {
+  const Polygon thin = {{0, 0}, {120, 0}, {120, 20}, {0, 20}};
+  const ShapeDescriptor square_shape = shape_descriptor(square(0));
+  LossMonitor monitor;
+  monitor.reset(square(0), 100);
+  for (int k = 1; k <= 4; ++k) monitor.update(square(k), 0.99, false, level(100));
+  EXPECT_EQ(monitor.update(thin, 0.55, false, level(100)), TrackState::kTracking);
+  EXPECT_LT(shape_distance(monitor.reference(), square_shape), 1e-9);
+  // Even confirmed once at full confidence, two thin frames against four squares do not outvote
+  // them.
+  monitor.update(thin, 0.99, false, level(100));
+  EXPECT_LT(shape_distance(monitor.reference(), square_shape), 1e-9);
+  for (int k = 0; k < 2; ++k) monitor.update(square(5 + k), 0.99, false, level(100));
+  for (int k = 0; k < 3; ++k) monitor.update(square(7), 0.0, true, {});
+  ASSERT_EQ(monitor.state(), TrackState::kLost);
+  EXPECT_LT(shape_distance(shape_descriptor(monitor.last_confident()), square_shape), 1e-9);
+  EXPECT_TRUE(monitor.matches(square(300, 50), level(100), 0.95));
+}
+
+// A real change of shape (the object turned) becomes the reference once it holds on most of the
+// kept frames, even at a modest confidence.
+TEST(LossMonitor, APersistentChangeOfShapeBecomesTheReference) {
+  const Polygon thin = {{0, 0}, {120, 0}, {120, 20}, {0, 20}};
+  LossMonitor monitor;
+  monitor.reset(square(0), 100);
+  for (int k = 1; k <= 4; ++k) monitor.update(square(k), 0.99, false, level(100));
+  int frames = 0;
+  while (shape_distance(monitor.reference(), shape_descriptor(thin)) > 1e-9 && frames < 10) {
+    EXPECT_EQ(monitor.update(thin, 0.6, false, level(100)), TrackState::kTracking);
+    ++frames;
+  }
+  EXPECT_LE(frames, 4);
+  EXPECT_GE(frames, 3);
+}
+
 TEST(LossMonitor, MatchNeedsTheReacquireConfidenceShapeAndLevel) {
   LossMonitor monitor;
   monitor.reset(square(0), 100);
