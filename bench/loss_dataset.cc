@@ -4,7 +4,8 @@
 // starts at the middle of the sequence; gaps and scores are eval/sequence_gap's, as in
 // `scbt eval --gaps` (S@10 after = from the re-acquired frame on).
 //
-//   build/bench/scbt_loss_dataset [--trace clean|grey|jump [--dump DIR]] DATASET_DIR [SEQUENCE...]
+//   build/bench/scbt_loss_dataset [--trace clean|grey|jump [--dump DIR]]
+//       [--retry-weak-frames true|false] DATASET_DIR [SEQUENCE...]
 #include <cmath>
 #include <cstdio>
 #include <opencv2/imgcodecs.hpp>
@@ -48,8 +49,8 @@ void draw_polygon(cv::Mat* image, const Polygon& polygon, const cv::Scalar& colo
 
 // trace: print one line per frame (state, confidence, evidence, error) to stderr. dump: a folder
 // to write the frames around the gap's end into, the truth green and the boundary by state.
-Run run_variant(const DatasetSequence& sequence, Variant variant, bool trace = false,
-                const std::string& dump = "") {
+Run run_variant(const DatasetSequence& sequence, Variant variant, const TrackerOptions& options,
+                bool trace = false, const std::string& dump = "") {
   std::vector<Polygon> truth;
   for (const std::string& line : read_text_lines(sequence.ground_truth)) {
     truth.push_back(parse_polygon_line(line));
@@ -59,7 +60,7 @@ Run run_variant(const DatasetSequence& sequence, Variant variant, bool trace = f
   const SequenceGap gap = variant == Variant::kGrey   ? SequenceGap::grey(total)
                           : variant == Variant::kJump ? SequenceGap::drop(total)
                                                       : SequenceGap();
-  Tracker tracker;
+  Tracker tracker(options);
   Run run;
   std::vector<LossFrame> frames;
   double ms = 0.0;
@@ -126,21 +127,28 @@ int main(int argc, char** argv) {
   std::vector<std::string> args(argv + 1, argv + argc);
   // --trace clean|grey|jump: one line per frame of that variant to stderr, and only that variant.
   // --dump DIR: with --trace, the frames around the gap's end as images into DIR.
-  std::string trace, dump;
+  // --retry-weak-frames true|false: AdaptiveThresholdOptions::retry_weak_frames (default: its
+  // default).
+  std::string trace, dump, retry;
   for (size_t i = 0; i + 1 < args.size();) {
-    if (args[i] == "--trace" || args[i] == "--dump") {
-      (args[i] == "--trace" ? trace : dump) = args[i + 1];
+    if (args[i] == "--trace" || args[i] == "--dump" || args[i] == "--retry-weak-frames") {
+      (args[i] == "--trace" ? trace : args[i] == "--dump" ? dump : retry) = args[i + 1];
       args.erase(args.begin() + i, args.begin() + i + 2);
     } else {
       ++i;
     }
   }
-  if (args.empty() || !(trace.empty() || trace == "clean" || trace == "grey" || trace == "jump")) {
-    std::fprintf(stderr,
-                 "usage: %s [--trace clean|grey|jump [--dump DIR]] DATASET_DIR [SEQUENCE...]\n",
-                 argv[0]);
+  if (args.empty() || !(trace.empty() || trace == "clean" || trace == "grey" || trace == "jump") ||
+      !(retry.empty() || retry == "true" || retry == "false")) {
+    std::fprintf(
+        stderr,
+        "usage: %s [--trace clean|grey|jump [--dump DIR]] [--retry-weak-frames true|false] "
+        "DATASET_DIR [SEQUENCE...]\n",
+        argv[0]);
     return 2;
   }
+  TrackerOptions options;
+  if (!retry.empty()) options.adaptive_thresholds.retry_weak_frames = retry == "true";
   const std::vector<std::string> names(args.begin() + 1, args.end());
   const std::vector<DatasetSequence> sequences = select_dataset_sequences(args[0], names);
   if (!trace.empty()) {
@@ -148,7 +156,7 @@ int main(int argc, char** argv) {
                             : trace == "grey" ? Variant::kGrey
                                               : Variant::kJump;
     for (const DatasetSequence& sequence : sequences) {
-      const Run run = run_variant(sequence, variant, /*trace=*/true, dump);
+      const Run run = run_variant(sequence, variant, options, /*trace=*/true, dump);
       std::printf("%s %s: delay %d, S@10 %.3f, AUC %.3f\n", sequence.name.c_str(), trace.c_str(),
                   run.delay, run.success_10, run.auc);
     }
@@ -165,9 +173,9 @@ int main(int argc, char** argv) {
     wrong->insert(wrong->end(), run.is_wrong.begin(), run.is_wrong.end());
   };
   for (const DatasetSequence& sequence : sequences) {
-    const Run clean = run_variant(sequence, Variant::kClean);
-    const Run grey = run_variant(sequence, Variant::kGrey);
-    const Run jump = run_variant(sequence, Variant::kJump);
+    const Run clean = run_variant(sequence, Variant::kClean, options);
+    const Run grey = run_variant(sequence, Variant::kGrey, options);
+    const Run jump = run_variant(sequence, Variant::kJump, options);
     std::printf("| %s | %d | %d | %.3f | %.3f | %d/%d/%d | %.3f | %d, %.3f | %d, %.3f |\n",
                 sequence.name.c_str(), clean.frames, clean.wrong, clean.auc, clean.success_10,
                 clean.states[0], clean.states[1], clean.states[2], clean.ms_mean, grey.delay,

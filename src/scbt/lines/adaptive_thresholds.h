@@ -21,10 +21,7 @@ struct AdaptiveThresholdOptions {
   // thresholds finds no boundary, or one below the tracking confidence, is searched again with
   // the adapted thresholds (and smoothing, below), and the more confident boundary of the two is
   // kept. A video the published thresholds serve is tracked exactly as without adaptation.
-  // Off by default for now: on a rendered return scene (tracker_reacquire_test, rim seed 1) a
-  // retry's boundary became the last confident shape before a gap and the object was not found
-  // again (docs/robustness-to-camera.md).
-  bool retry_weak_frames = false;
+  bool retry_weak_frames = true;
   // ... and the setting (published or adapted) that won a weak frame's retry is the one tried
   // first on the next frames, the other one being the retry: a dim or noisy video then runs one
   // search per frame again, and switches back when the published thresholds win a weak frame.

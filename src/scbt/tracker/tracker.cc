@@ -250,10 +250,17 @@ void Tracker::assess(Attempt* a, const Polygon& previous) const {
   a->confidence = options_.confidence(a->evidence);
 }
 
+bool Tracker::trusted(const Attempt& a, bool adapted) const {
+  // Lowered thresholds close many more cycles, as a search for a lost object tests many more:
+  // their boundary must also keep the reference shape, as a re-found object's must.
+  return a.choice && a.confidence >= options_.loss.tracking_confidence &&
+         (!adapted || a.evidence.shape_change <= options_.loss.match_shape_distance);
+}
+
 Tracker::Attempt* Tracker::retry_weak(const cv::Mat& frame, Attempt* first, TrackResult* result) {
   assess(first, boundary_);
-  if (first->choice && first->confidence >= options_.loss.tracking_confidence) return first;
   const bool first_adapted = adapted_first_;
+  if (trusted(*first, first_adapted)) return first;
   if (!first_adapted) {
     // A dim or blurred frame's boundary falls below the published thresholds, a noisy frame's
     // breaks into fragments: is there anything lower (or smoother) to look with?
@@ -277,10 +284,14 @@ Tracker::Attempt* Tracker::retry_weak(const cv::Mat& frame, Attempt* first, Trac
   assess(retry, boundary_);
   // Only a trusted boundary replaces the first search's: lowered thresholds find some closed cycle
   // in almost any textured window, and a held frame (or a motion recovery) is better than that.
-  if (retry->choice && retry->confidence >= options_.loss.tracking_confidence &&
-      (!first->choice || retry->confidence > first->confidence)) {
+  if (trusted(*retry, !first_adapted)) {
     if (options_.adaptive_thresholds.keep_retry_winner) adapted_first_ = !first_adapted;
     return retry;
+  }
+  // An adapted search's boundary of another shape is not taken either.
+  if (first_adapted && first->choice &&
+      first->evidence.shape_change > options_.loss.match_shape_distance) {
+    first->choice.reset();
   }
   // The retry converted the same window into gray_: the first attempt's evidence stays valid.
   return first;

@@ -142,6 +142,10 @@ class Tracker {
   // AdaptiveThresholdOptions::retry_weak_frames: `first` or, when it was weak, the search again
   // with the other thresholds (adapted or published) if that found a more confident boundary.
   Attempt* retry_weak(const cv::Mat& frame, Attempt* first, TrackResult* result);
+  // Whether an assessed attempt's boundary may be taken: trusted (LossOptions::tracking_confidence)
+  // and, found with `adapted` thresholds, of the reference shape
+  // (LossOptions::match_shape_distance).
+  bool trusted(const Attempt& a, bool adapted) const;
   bool adapted_first_ = false;  // the first search of a frame uses adapted thresholds
   // Whether `moved` (a predicted placement of the boundary) agrees with its appearance better
   // than `unmoved` does, and at least by TrackerOptions::min_motion_agreement.
