@@ -19,8 +19,9 @@ struct AdaptiveThresholdOptions {
   bool enabled = false;
   // Only on a weak frame (when `enabled` is off): a frame whose search with the published
   // thresholds finds no boundary, or one below the tracking confidence, is searched again with
-  // the adapted thresholds (and smoothing, below), and the more confident boundary of the two is
-  // kept. A video the published thresholds serve is tracked exactly as without adaptation.
+  // the adapted thresholds (and smoothing, below); its boundary is taken when trusted and, since
+  // lowered thresholds close many more cycles, of the reference shape (LossOptions::
+  // match_shape_distance). A video the published thresholds serve is tracked as without it.
   bool retry_weak_frames = true;
   // ... and the setting (published or adapted) that won a weak frame's retry is the one tried
   // first on the next frames, the other one being the retry: a dim or noisy video then runs one
