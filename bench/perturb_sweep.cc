@@ -116,6 +116,8 @@ int main(int argc, char** argv) {
   app.add_option("-j,--jobs", jobs, "parallel sequences");
   app.add_option("--max-frames", max_frames, "only the first N frames");
   app.add_option("--frames-csv", frames_csv, "write per-frame E_AL here");
+  std::uint64_t perturb_seed = 1;
+  app.add_option("--perturb-seed", perturb_seed, "seed of the noise perturbations");
   app.add_option("--gradient-threshold", options.detector.gradient_threshold);
   app.add_option("--anchor-threshold", options.detector.anchor_threshold);
   app.add_option("--filter-distance", options.filter_distance);
@@ -124,6 +126,8 @@ int main(int argc, char** argv) {
   app.add_option("--recover-by-motion", options.recover_by_motion);
   app.add_option("--predict-motion", options.predict_motion);
   app.add_option("--confirm-motion", options.confirm_motion);
+  app.add_option("--measure-motion", options.measure_motion);
+  app.add_option("--min-predicted-move", options.min_predicted_move);
   app.add_option("--min-motion-agreement", options.min_motion_agreement);
   app.add_option("--adaptive-thresholds", options.adaptive_thresholds.enabled);
   app.add_option("--retry-weak-frames", options.adaptive_thresholds.retry_weak_frames);
@@ -137,7 +141,7 @@ int main(int argc, char** argv) {
   try {
     options.check();
     const std::vector<scbt::Perturbation> perturbations =
-        scbt::parse_perturbation_list(perturb_list);
+        scbt::parse_perturbation_list(perturb_list, perturb_seed);
     std::vector<std::string> names;
     std::stringstream ss(sequence_list);
     for (std::string n; std::getline(ss, n, ',');) names.push_back(n);

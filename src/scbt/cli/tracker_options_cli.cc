@@ -27,8 +27,14 @@ void add_tracker_options(CLI::App* command, TrackerOptions* options, std::string
       ->capture_default_str();
   command
       ->add_option("--predict-motion", options->predict_motion,
-                   "Search where the boundary's last motion (constant velocity) predicts it; "
-                   "when nothing passes the area gate, also with its predicted growth (true/false)")
+                   "Search where the boundary's motion predicts it; when nothing passes the area "
+                   "gate, also with its predicted growth (true/false)")
+      ->capture_default_str();
+  command
+      ->add_option("--measure-motion", options->measure_motion,
+                   "With --predict-motion: the motion is the image motion around the boundary "
+                   "(phase correlation), measured when the boundary moves fast; false: its last "
+                   "velocity extrapolated (true/false)")
       ->capture_default_str();
   command
       ->add_option("--seed-stride", options->bdsp.seed_stride,

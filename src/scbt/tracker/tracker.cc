@@ -146,7 +146,8 @@ void Tracker::attempt(const cv::Mat& frame, const Polygon& prior, Attempt* a, do
 }
 
 void Tracker::remember_reference(const cv::Mat& frame, const Attempt& a) {
-  if (!options_.recover_by_motion) return;
+  // The reference is the window the image motion is measured against (recovery, prediction).
+  if (!options_.recover_by_motion && !(options_.predict_motion && options_.measure_motion)) return;
   reference_roi_ = a.roi;
   if (frame.channels() == 1) {
     // Grey input is a view of the caller's frame: a deep copy, into the reused buffer.
@@ -179,7 +180,9 @@ bool Tracker::confirmed(const cv::Mat& frame, const Polygon& moved, const Polygo
 
 Tracker::Attempt* Tracker::search(const cv::Mat& frame, TrackResult* result) {
   Attempt* a = &attempts_[0];
-  if (options_.predict_motion) {
+  if (options_.predict_motion && options_.measure_motion) {
+    place_by_image_motion(frame);
+  } else if (options_.predict_motion) {
     motion_.predict(boundary_, /*with_scale=*/false, &predicted_);
     if (options_.confirm_motion && predicted_ != boundary_ &&
         !confirmed(frame, predicted_, boundary_)) {

@@ -103,8 +103,9 @@ class Tracker {
   // image motion when it is lost (TrackerOptions::recover_by_motion).
   cv::Mat reference_gray_;
   cv::Rect reference_roi_;
-  MotionModel motion_;  // predicts where the boundary goes next (TrackerOptions::predict_motion)
-  Polygon predicted_;   // where this frame's search looks (reused buffer)
+  MotionModel motion_;    // predicts where the boundary goes next (TrackerOptions::predict_motion)
+  Polygon predicted_;     // where this frame's search looks (reused buffer)
+  Polygon extrapolated_;  // where the boundary's last velocity puts it (place_by_image_motion)
   BoundaryAppearance appearance_;  // confirms predictions (TrackerOptions::confirm_motion)
 
   // One pass of the per-frame pipeline searching around `prior`. Two are kept (the first try
@@ -147,6 +148,10 @@ class Tracker {
   // (LossOptions::match_shape_distance).
   bool trusted(const Attempt& a, bool adapted) const;
   bool adapted_first_ = false;  // the first search of a frame uses adapted thresholds
+  // TrackerOptions::measure_motion: predicted_ becomes the boundary moved by the image motion
+  // around it since the last tracked frame, when its recent motion says it moves
+  // (tracker_predict.cc).
+  void place_by_image_motion(const cv::Mat& frame);
   // Whether `moved` (a predicted placement of the boundary) agrees with its appearance better
   // than `unmoved` does, and at least by TrackerOptions::min_motion_agreement.
   bool confirmed(const cv::Mat& frame, const Polygon& moved, const Polygon& unmoved);

@@ -27,6 +27,10 @@ void TrackerOptions::check() const {
     throw std::invalid_argument("min_motion_agreement must be in [-1, 1], got " +
                                 std::to_string(min_motion_agreement));
   }
+  if (!(min_predicted_move >= 0.0 && min_predicted_move <= 100.0)) {
+    throw std::invalid_argument("min_predicted_move must be in [0, 100] (x filter_distance), got " +
+                                std::to_string(min_predicted_move));
+  }
   if (max_segments < 3 || max_segments > 100000) {
     throw std::invalid_argument("max_segments must be in 3..100000, got " +
                                 std::to_string(max_segments));

@@ -1,0 +1,27 @@
+// Where a frame's search looks when the boundary moves (TrackerOptions::measure_motion): the image
+// motion around it, measured by phase correlation against the last tracked frame's window.
+#include <opencv2/core.hpp>
+
+#include "scbt/lines/line_detector.h"
+#include "scbt/tracker/motion_estimate.h"
+#include "scbt/tracker/tracker.h"
+
+namespace scbt {
+
+void Tracker::place_by_image_motion(const cv::Mat& frame) {
+  predicted_ = boundary_;
+  // The boundary's last velocity only decides whether to measure: a fast camera's steps recur
+  // from frame to frame, while a noisy frame's jump (another cycle chosen) says nothing of where
+  // the object goes and is not followed.
+  motion_.predict(boundary_, /*with_scale=*/false, &extrapolated_);
+  const Point step = area_centroid(extrapolated_) - area_centroid(boundary_);
+  if (cv::norm(step) < options_.min_predicted_move * options_.filter_distance) return;
+  if (reference_gray_.empty()) return;
+  to_gray(frame(reference_roi_), &cut_gray_);
+  const std::optional<TranslationEstimate> image_motion =
+      estimate_translation(reference_gray_, cut_gray_);
+  if (!image_motion) return;
+  for (Point& p : predicted_) p += image_motion->shift;
+}
+
+}  // namespace scbt
