@@ -8,31 +8,11 @@
 #include <opencv2/imgproc.hpp>
 #include <vector>
 
+#include "scbt/tracker/hexagon_scene_test_util.h"
 #include "scbt/tracker/tracker.h"
 
 namespace scbt {
 namespace {
-
-Polygon hexagon(Point center, double radius) {
-  Polygon polygon;
-  for (int k = 0; k < 6; ++k) {
-    const double angle = CV_PI / 3.0 * k + 0.2;
-    polygon.emplace_back(center.x + radius * std::cos(angle), center.y + radius * std::sin(angle));
-  }
-  return polygon;
-}
-
-// A textured table (so image motion is measurable) with a flat, dark hexagon on it.
-cv::Mat render_scene(unsigned seed) {
-  cv::Mat scene(720, 960, CV_8U);
-  cv::RNG rng(seed);
-  rng.fill(scene, cv::RNG::UNIFORM, 90, 200);
-  cv::GaussianBlur(scene, scene, cv::Size(0, 0), 3.0);
-  std::vector<cv::Point> points;
-  for (const Point& p : hexagon({480, 360}, 70)) points.emplace_back(cvRound(p.x), cvRound(p.y));
-  cv::fillPoly(scene, std::vector<std::vector<cv::Point>>{points}, cv::Scalar(20), cv::LINE_AA);
-  return scene;
-}
 
 double mean_vertex_distance(const Polygon& tracked, const Polygon& truth) {
   double sum = 0.0;
@@ -70,7 +50,7 @@ double worst_error_over_pan(const cv::Mat& scene, Prediction prediction) {
 class MotionPredictionTest : public ::testing::TestWithParam<int> {};
 
 TEST_P(MotionPredictionTest, MeasuredImageMotionFollowsAFastPanThatTurnsBack) {
-  const cv::Mat scene = render_scene(300 + GetParam());
+  const cv::Mat scene = render_hexagon_scene(300 + GetParam());
   EXPECT_LT(worst_error_over_pan(scene, Prediction::kMeasured), 2.0);
   // The same pan defeats the unmoved band (26 px steps) and the extrapolated velocity (which
   // overshoots by twice the step when the pan turns back).

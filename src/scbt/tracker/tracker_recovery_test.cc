@@ -5,31 +5,11 @@
 #include <opencv2/imgproc.hpp>
 #include <tuple>
 
+#include "scbt/tracker/hexagon_scene_test_util.h"
 #include "scbt/tracker/tracker.h"
 
 namespace scbt {
 namespace {
-
-Polygon hexagon(Point center, double radius) {
-  Polygon polygon;
-  for (int k = 0; k < 6; ++k) {
-    const double angle = CV_PI / 3.0 * k + 0.2;
-    polygon.emplace_back(center.x + radius * std::cos(angle), center.y + radius * std::sin(angle));
-  }
-  return polygon;
-}
-
-// A textured scene (so image motion is measurable) with a flat, dark hexagon in it.
-cv::Mat render_scene(unsigned seed) {
-  cv::Mat scene(720, 960, CV_8U);
-  cv::RNG rng(seed);
-  rng.fill(scene, cv::RNG::UNIFORM, 90, 200);
-  cv::GaussianBlur(scene, scene, cv::Size(0, 0), 3.0);
-  std::vector<cv::Point> points;
-  for (const Point& p : hexagon({480, 360}, 70)) points.emplace_back(cvRound(p.x), cvRound(p.y));
-  cv::fillPoly(scene, std::vector<std::vector<cv::Point>>{points}, cv::Scalar(20), cv::LINE_AA);
-  return scene;
-}
 
 // The 640x480 view of the scene whose top-left corner is at `corner`, grey or BGR (the tracker
 // keeps its reference window differently for the two: a copy of a grey frame's view, its own
@@ -53,7 +33,7 @@ class RecoveryTest : public ::testing::TestWithParam<std::tuple<int, bool>> {};
 TEST_P(RecoveryTest, FollowsACameraSwingBeyondTheBand) {
   const int seed = std::get<0>(GetParam());
   const bool colour = std::get<1>(GetParam());
-  const cv::Mat scene = render_scene(100 + seed);
+  const cv::Mat scene = render_hexagon_scene(100 + seed);
   const cv::Point start(160, 120);
   // The picture jumps by 34..46 px: far beyond the 20 px band around the previous boundary.
   const cv::Point swing(-(30 + 4 * seed), 20 + 2 * seed);
