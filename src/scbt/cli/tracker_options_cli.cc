@@ -49,6 +49,11 @@ void add_tracker_options(CLI::App* command, TrackerOptions* options, std::string
                    "EDLines anchor threshold")
       ->capture_default_str();
   command
+      ->add_option("--normalize-exposure", options->exposure.normalize,
+                   "Scale the EDLines thresholds down on a frame whose grey levels span less than "
+                   "half the 8-bit range (dim or low-contrast camera) (true/false)")
+      ->capture_default_str();
+  command
       ->add_option("--min-line-length", options->detector.min_line_length,
                    "Shortest segment kept (px); <= 0: EDLines' own choice")
       ->capture_default_str();

@@ -46,6 +46,7 @@ Polygon Tracker::init_from_box(const cv::Mat& frame, const cv::Rect& box) {
                                 std::to_string(frame.cols) + "x" + std::to_string(frame.rows) +
                                 " frame");
   }
+  scale_thresholds_to_exposure(frame);
   const std::vector<Segment> segments = detector_->detect_in(gray(box), box.tl(), frame.size());
   const std::optional<Polygon> boundary =
       most_salient_boundary(segments, kMinBoxAreaShare * box.area(), options_.bdsp);

@@ -8,6 +8,7 @@
 #include <utility>
 
 #include "scbt/filter/segment_filter.h"
+#include "scbt/lines/exposure.h"
 #include "scbt/lines/line_detector.h"
 #include "scbt/tracker/frame_checks.h"
 #include "scbt/tracker/motion_estimate.h"
@@ -50,8 +51,21 @@ Tracker::~Tracker() = default;
 Tracker::Tracker(Tracker&&) noexcept = default;
 Tracker& Tracker::operator=(Tracker&&) noexcept = default;
 
+void Tracker::scale_thresholds_to_exposure(const cv::Mat& frame) {
+  gradient_threshold_ = options_.detector.gradient_threshold;
+  anchor_threshold_ = options_.detector.anchor_threshold;
+  if (options_.exposure.normalize && detector_->adapts_thresholds()) {
+    const double gain =
+        exposure_gain(intensity_spread(frame, options_.exposure.sample_step), options_.exposure);
+    gradient_threshold_ = threshold_for_exposure(gradient_threshold_, gain);
+    anchor_threshold_ = threshold_for_exposure(anchor_threshold_, gain);
+  }
+  detector_->set_edge_thresholds(gradient_threshold_, anchor_threshold_);
+}
+
 void Tracker::init(const cv::Mat& frame, const Polygon& polygon) {
   check_tracker_init(frame, polygon, &gray_);
+  scale_thresholds_to_exposure(frame);
   boundary_ = polygon;
   boundary_area_ = area(polygon);
   reference_roi_ = cv::Rect(cv::Point(0, 0), frame.size());
@@ -89,15 +103,13 @@ void Tracker::attempt(const cv::Mat& frame, const Polygon& prior, Attempt* a, do
     // (AdaptiveThresholdOptions::retry_weak_frames).
     AdaptiveThresholdOptions this_window = options_.adaptive_thresholds;
     this_window.enabled = true;
-    detect_on = &adapt_to_frame(gray_, a->roi.tl(), prior, options_.detector.gradient_threshold,
-                                options_.detector.anchor_threshold, this_window, &smoothed_gray_,
-                                &a->thresholds);
+    detect_on = &adapt_to_frame(gray_, a->roi.tl(), prior, gradient_threshold_, anchor_threshold_,
+                                this_window, &smoothed_gray_, &a->thresholds);
     detector_->set_edge_thresholds(a->thresholds.gradient, a->thresholds.anchor);
   } else if (options_.adaptive_thresholds.enabled && detector_->adapts_thresholds()) {
     // Thresholds (and, for a noisy window, a smoothed copy to detect on) suited to this window.
-    detect_on = &adapt_to_frame(gray_, a->roi.tl(), prior, options_.detector.gradient_threshold,
-                                options_.detector.anchor_threshold, options_.adaptive_thresholds,
-                                &smoothed_gray_, &a->thresholds);
+    detect_on = &adapt_to_frame(gray_, a->roi.tl(), prior, gradient_threshold_, anchor_threshold_,
+                                options_.adaptive_thresholds, &smoothed_gray_, &a->thresholds);
     detector_->set_edge_thresholds(a->thresholds.gradient, a->thresholds.anchor);
   }
   if (options_.detector.crop_to_boundary) {
@@ -108,8 +120,7 @@ void Tracker::attempt(const cv::Mat& frame, const Polygon& prior, Attempt* a, do
     a->detected = detector_->detect_in(*detect_on, a->roi.tl(), frame_size_);
   }
   if (adapt) {
-    detector_->set_edge_thresholds(options_.detector.gradient_threshold,
-                                   options_.detector.anchor_threshold);
+    detector_->set_edge_thresholds(gradient_threshold_, anchor_threshold_);
   }
   a->line_ms = elapsed_ms(line_start);
 
@@ -271,13 +282,13 @@ Tracker::Attempt* Tracker::retry_weak(const cv::Mat& frame, Attempt* first, Trac
     AdaptiveThresholdOptions this_window = options_.adaptive_thresholds;
     this_window.enabled = true;
     this_window.smooth_noise = false;
-    adapt_to_frame(gray_, first->roi.tl(), predicted_, options_.detector.gradient_threshold,
-                   options_.detector.anchor_threshold, this_window, nullptr, &thresholds);
+    adapt_to_frame(gray_, first->roi.tl(), predicted_, gradient_threshold_, anchor_threshold_,
+                   this_window, nullptr, &thresholds);
     const bool smooths =
         options_.adaptive_thresholds.smooth_noise &&
         smoothing_for_noise(thresholds.noise_sigma, options_.adaptive_thresholds) > 0.0;
-    if (thresholds.gradient >= options_.detector.gradient_threshold && !smooths) return first;
-  } else if (first->thresholds.gradient >= options_.detector.gradient_threshold &&
+    if (thresholds.gradient >= gradient_threshold_ && !smooths) return first;
+  } else if (first->thresholds.gradient >= gradient_threshold_ &&
              first->thresholds.pre_smoothing == 0.0) {
     return first;  // the adapted search was the published one
   }
@@ -304,6 +315,7 @@ TrackResult Tracker::track(const cv::Mat& frame) {
   if (!initialized()) throw std::logic_error("Tracker::track called before init");
   if (frame.empty()) to_gray(frame, &gray_);  // throws
   check_frame_size(frame, frame_size_);
+  scale_thresholds_to_exposure(frame);
   if (monitor_.state() == TrackState::kLost) return track_lost(frame);
   TrackResult result;
   Attempt* a = search(frame, &result);

@@ -148,6 +148,11 @@ class Tracker {
   // (LossOptions::match_shape_distance).
   bool trusted(const Attempt& a, bool adapted) const;
   bool adapted_first_ = false;  // the first search of a frame uses adapted thresholds
+  // This frame's published thresholds, scaled to its exposure (ExposureOptions): what adapted
+  // thresholds start from and detection returns to.
+  void scale_thresholds_to_exposure(const cv::Mat& frame);
+  int gradient_threshold_ = 36;
+  int anchor_threshold_ = 8;
   // TrackerOptions::measure_motion: predicted_ becomes the boundary moved by the image motion
   // around it since the last tracked frame, when its recent motion says it moves
   // (tracker_predict.cc).

@@ -18,9 +18,7 @@ double elapsed_ms(Clock::time_point since) {
 
 // A Sobel response of `threshold` is a grey step of about threshold / 4 (the 3x3 Sobel kernel
 // weighs a step 1 + 2 + 1): the smallest step the detector sees as an edge.
-double min_edge_step(const LineDetectorOptions& detector) {
-  return detector.gradient_threshold / 4.0;
-}
+double min_edge_step(int gradient_threshold) { return gradient_threshold / 4.0; }
 
 // A re-found object may be a little larger or smaller than when it was lost: the area gate of
 // the search around a placement is relaxed to this (the shape must then match).
@@ -51,7 +49,7 @@ BoundaryEvidence Tracker::evidence_of(const Attempt& a, const Polygon& chosen,
                                       const Polygon& previous) const {
   const double gap_length = a.choice->cost * a.cycles->area(a.choice->index);
   return measure_evidence(chosen, gap_length, previous, monitor_.reference(), gray_, a.roi.tl(),
-                          min_edge_step(options_.detector));
+                          min_edge_step(gradient_threshold_));
 }
 
 void Tracker::check_view_cut(const cv::Mat& frame, const TrackResult& result) {

@@ -9,6 +9,7 @@ namespace scbt {
 void TrackerOptions::check() const {
   detector.check();
   adaptive_thresholds.check();
+  exposure.check();
   loss.check();
   appearance.check();
   if (!(filter_distance > 0.0 && filter_distance <= 1000.0)) {

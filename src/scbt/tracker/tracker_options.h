@@ -3,6 +3,7 @@
 
 #include "scbt/cycles/bdsp.h"
 #include "scbt/lines/adaptive_thresholds.h"
+#include "scbt/lines/exposure.h"
 #include "scbt/lines/line_detector.h"
 #include "scbt/tracker/confidence.h"
 #include "scbt/tracker/contrast_profile.h"
@@ -41,6 +42,9 @@ struct TrackerOptions {
   bool confirm_motion = true;
   double min_motion_agreement = 0.0;  // ... and the predicted placement's own agreement (cosine)
   ContrastProfileOptions appearance;
+  // EDLines thresholds scaled down on a frame of low contrast (dim or washed out), as if its
+  // grey levels were stretched to half the 8-bit range (exposure.h).
+  ExposureOptions exposure;
   // Per-frame EDLines thresholds from the boundary's contrast and the image noise (edlines only).
   AdaptiveThresholdOptions adaptive_thresholds;
   BdspOptions bdsp;

@@ -1,0 +1,110 @@
+// ExposureOptions on rendered views: in a dim view the hexagon's edge falls below EDLines'
+// published thresholds; scaled to the frame's contrast they detect it again (with no weak-frame
+// retry to help), a box drawn in a dim frame finds the outline, and a well-exposed view is tracked
+// exactly as without the scaling.
+#include <gtest/gtest.h>
+
+#include <opencv2/core.hpp>
+#include <sstream>
+#include <stdexcept>
+
+#include "scbt/synthetic/scene.h"
+#include "scbt/tracker/hexagon_scene_test_util.h"
+#include "scbt/tracker/tracker.h"
+
+namespace scbt {
+namespace {
+
+constexpr int kFrames = 20;
+const cv::Point kStart(160, 120);
+const cv::Point kStep(3, 2);  // the camera pans this far per frame
+
+// The 640x480 view at `corner`, its values times `brightness` plus Gaussian noise of `noise` grey
+// levels: a dim camera.
+cv::Mat dim_view(const cv::Mat& scene, cv::Point corner, double brightness, double noise,
+                 cv::RNG* rng) {
+  cv::Mat frame;
+  scene(cv::Rect(corner, cv::Size(640, 480))).convertTo(frame, CV_32F, brightness);
+  cv::Mat gain_noise(frame.size(), frame.type());
+  rng->fill(gain_noise, cv::RNG::NORMAL, 0.0, noise);
+  frame += gain_noise;
+  frame.convertTo(frame, CV_8U);  // saturates to 0..255
+  return frame;
+}
+
+Polygon truth_at(int k) {
+  const cv::Point corner = kStart + k * kStep;
+  return hexagon({480.0 - corner.x, 360.0 - corner.y}, 70);
+}
+
+struct PanRun {
+  double max_error = 0.0;  // px, mean_boundary_distance to the truth, worst frame
+  int held = 0;
+  std::vector<Polygon> tracked;
+};
+
+PanRun track_pan(double brightness, double noise, bool normalize, unsigned seed) {
+  const cv::Mat scene = render_hexagon_scene(seed);
+  TrackerOptions options;
+  options.exposure.normalize = normalize;
+  // Without the weak-frame retry, which lowers the thresholds on its own on a held frame.
+  options.adaptive_thresholds.retry_weak_frames = false;
+  Tracker tracker(options);
+  cv::RNG rng(seed);
+  tracker.init(dim_view(scene, kStart, brightness, noise, &rng), truth_at(0));
+  PanRun run;
+  for (int k = 1; k < kFrames; ++k) {
+    const TrackResult result =
+        tracker.track(dim_view(scene, kStart + k * kStep, brightness, noise, &rng));
+    run.held += result.held ? 1 : 0;
+    run.max_error =
+        std::max(run.max_error, mean_boundary_distance(result.boundary, truth_at(k), 0.5));
+    run.tracked.push_back(result.boundary);
+  }
+  return run;
+}
+
+TEST(TrackerExposureTest, DimViewIsFollowedWithThresholdsScaledToItsContrast) {
+  for (unsigned seed : {1u, 2u, 3u}) {
+    // At 7 % of the light the hexagon's step (about 125 grey levels lit) is under 9 levels:
+    // below the published gradient threshold. The frame's spread is as low.
+    const PanRun scaled = track_pan(0.07, 0.5, true, seed);
+    const PanRun published = track_pan(0.07, 0.5, false, seed);
+    std::ostringstream where;
+    where << "seed " << seed << ": scaled worst " << scaled.max_error << " px, held " << scaled.held
+          << "; published worst " << published.max_error << " px, held " << published.held;
+    EXPECT_LT(scaled.max_error, 1.5) << where.str();
+    EXPECT_EQ(scaled.held, 0) << where.str();
+    EXPECT_GT(published.held, kFrames / 2) << where.str();
+  }
+}
+
+TEST(TrackerExposureTest, WellExposedViewIsTrackedExactlyAsWithoutScaling) {
+  const PanRun scaled = track_pan(1.0, 2.0, true, 4);
+  const PanRun published = track_pan(1.0, 2.0, false, 4);
+  ASSERT_EQ(scaled.tracked.size(), published.tracked.size());
+  for (size_t k = 0; k < scaled.tracked.size(); ++k) {
+    EXPECT_EQ(scaled.tracked[k], published.tracked[k]) << "frame " << k + 1;
+  }
+  EXPECT_LT(scaled.max_error, 1.5);
+}
+
+// A box drawn in a dim frame: the search for the most salient boundary in it has no previous
+// boundary to adapt thresholds to, only the frame's exposure.
+TEST(TrackerExposureTest, BoxInADimFrameFindsTheOutline) {
+  for (unsigned seed : {1u, 2u, 3u}) {
+    cv::RNG rng(seed);
+    const cv::Mat frame = dim_view(render_hexagon_scene(seed), kStart, 0.07, 0.5, &rng);
+    const cv::Rect box(200, 120, 240, 240);  // the hexagon at (320, 240), radius 70
+    Tracker scaled;
+    EXPECT_LT(mean_boundary_distance(scaled.init_from_box(frame, box), truth_at(0)), 1.5)
+        << "seed " << seed;
+    TrackerOptions published_only;
+    published_only.exposure.normalize = false;
+    Tracker published(published_only);
+    EXPECT_THROW(published.init_from_box(frame, box), std::runtime_error) << "seed " << seed;
+  }
+}
+
+}  // namespace
+}  // namespace scbt
