@@ -44,6 +44,8 @@ Tracker::Tracker(const TrackerOptions& options,
       view_change_(options.loss.view_change) {
   options_.check();
   detector_ = make_line_detector(options_.detector);
+  gradient_threshold_ = options_.detector.gradient_threshold;
+  anchor_threshold_ = options_.detector.anchor_threshold;
   for (Attempt& a : attempts_) a.cycles = make_cycle_stage();
 }
 

@@ -151,8 +151,8 @@ class Tracker {
   // This frame's published thresholds, scaled to its exposure (ExposureOptions): what adapted
   // thresholds start from and detection returns to.
   void scale_thresholds_to_exposure(const cv::Mat& frame);
-  int gradient_threshold_ = 36;
-  int anchor_threshold_ = 8;
+  int gradient_threshold_;
+  int anchor_threshold_;
   // TrackerOptions::measure_motion: predicted_ becomes the boundary moved by the image motion
   // around it since the last tracked frame, when its recent motion says it moves
   // (tracker_predict.cc).

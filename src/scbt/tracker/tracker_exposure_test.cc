@@ -9,6 +9,7 @@
 #include <stdexcept>
 
 #include "scbt/synthetic/scene.h"
+#include "scbt/tracker/dim_camera_test_util.h"
 #include "scbt/tracker/hexagon_scene_test_util.h"
 #include "scbt/tracker/tracker.h"
 
@@ -19,17 +20,10 @@ constexpr int kFrames = 20;
 const cv::Point kStart(160, 120);
 const cv::Point kStep(3, 2);  // the camera pans this far per frame
 
-// The 640x480 view at `corner`, its values times `brightness` plus Gaussian noise of `noise` grey
-// levels: a dim camera.
+// The 640x480 view at `corner`, as a dim camera gives it (dim_camera_frame).
 cv::Mat dim_view(const cv::Mat& scene, cv::Point corner, double brightness, double noise,
                  cv::RNG* rng) {
-  cv::Mat frame;
-  scene(cv::Rect(corner, cv::Size(640, 480))).convertTo(frame, CV_32F, brightness);
-  cv::Mat gain_noise(frame.size(), frame.type());
-  rng->fill(gain_noise, cv::RNG::NORMAL, 0.0, noise);
-  frame += gain_noise;
-  frame.convertTo(frame, CV_8U);  // saturates to 0..255
-  return frame;
+  return dim_camera_frame(scene(cv::Rect(corner, cv::Size(640, 480))), brightness, noise, rng);
 }
 
 Polygon truth_at(int k) {

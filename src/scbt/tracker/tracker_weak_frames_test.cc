@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "scbt/synthetic/scene.h"
+#include "scbt/tracker/dim_camera_test_util.h"
 #include "scbt/tracker/tracker.h"
 
 namespace scbt {
@@ -38,12 +39,7 @@ ClipRun track_clip(double brightness, double noise, bool retry_weak_frames, std:
   cv::RNG rng(seed);
   ClipRun run;
   for (int k = 0; k < kFrames; ++k) {
-    cv::Mat frame;
-    clip[k].image.convertTo(frame, CV_32F, brightness);
-    cv::Mat gain_noise(frame.size(), frame.type());
-    rng.fill(gain_noise, cv::RNG::NORMAL, 0.0, noise);
-    frame += gain_noise;
-    frame.convertTo(frame, CV_8U);  // saturates to 0..255
+    const cv::Mat frame = dim_camera_frame(clip[k].image, brightness, noise, &rng);
     if (k == 0) {
       tracker.init(frame, clip[0].truth);
       continue;
