@@ -37,6 +37,11 @@ void add_tracker_options(CLI::App* command, TrackerOptions* options, std::string
                    "velocity extrapolated (true/false)")
       ->capture_default_str();
   command
+      ->add_option("--fall-back-unmoved", options->fall_back_unmoved,
+                   "With --predict-motion: when nothing trusted is found where the motion "
+                   "predicts the boundary, search where it was as well (true/false)")
+      ->capture_default_str();
+  command
       ->add_option("--seed-stride", options->bdsp.seed_stride,
                    "BDSP seeds every Nth detected segment (the paper: 2)")
       ->capture_default_str();

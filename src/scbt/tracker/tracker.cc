@@ -99,6 +99,7 @@ void Tracker::attempt(const cv::Mat& frame, const Polygon& prior, Attempt* a, do
     if (a->roi.empty()) a->roi = cv::Rect(cv::Point(0, 0), frame_size_);
   }
   to_gray(frame(a->roi), &gray_);
+  gray_roi_ = a->roi;
   const cv::Mat* detect_on = &gray_;
   if (adapt) {
     // Thresholds (and smoothing) for this window only
@@ -192,7 +193,6 @@ bool Tracker::confirmed(const cv::Mat& frame, const Polygon& moved, const Polygo
 }
 
 Tracker::Attempt* Tracker::search(const cv::Mat& frame, TrackResult* result) {
-  Attempt* a = &attempts_[0];
   if (options_.predict_motion && options_.measure_motion) {
     place_by_image_motion(frame);
   } else if (options_.predict_motion) {
@@ -209,11 +209,39 @@ Tracker::Attempt* Tracker::search(const cv::Mat& frame, TrackResult* result) {
   const bool retry_weak_frames =
       options_.adaptive_thresholds.retry_weak_frames && !options_.adaptive_thresholds.enabled &&
       detector_->adapts_thresholds() && monitor_.state() != TrackState::kLost;
-  attempt(frame, predicted_, a, options_.min_area_similarity, retry_weak_frames && adapted_first_);
+  const bool adapted_first = retry_weak_frames && adapted_first_;
+  Attempt* a = &attempts_[0];
+  attempt(frame, predicted_, a, options_.min_area_similarity, adapted_first);
   result->line_ms = a->line_ms;
   result->grouping_ms = a->grouping_ms;
   result->stages = a->stages;
-  if (retry_weak_frames) a = retry_weak(frame, a, result);
+  if (retry_weak_frames) a = retry_weak(frame, a, predicted_, &attempts_[1], result);
+
+  // A prediction can be wrong (a blurred frame's measured motion, a camera that stopped): when
+  // nothing trusted was found where it points, where the boundary was is searched as well.
+  if (options_.fall_back_unmoved && predicted_ != boundary_) {
+    if (!a->assessed) assess(a, boundary_);
+    if (!trusted(*a, /*adapted=*/false)) {
+      const bool adapted_before = adapted_first_;
+      adapted_first_ = adapted_first;
+      Attempt* unmoved = &attempts_[2];
+      attempt(frame, boundary_, unmoved, options_.min_area_similarity, adapted_first);
+      add_retry_times(*unmoved, result);
+      if (retry_weak_frames) unmoved = retry_weak(frame, unmoved, boundary_, &attempts_[3], result);
+      if (!unmoved->assessed) assess(unmoved, boundary_);
+      // A second search tests more cycles: its boundary must also keep the reference shape.
+      if (trusted(*unmoved, /*adapted=*/true)) {
+        a = unmoved;
+      } else {
+        adapted_first_ = adapted_before;
+      }
+      // The grey window must be the chosen attempt's (the motion reference is taken from it).
+      if (a->roi != gray_roi_) {
+        to_gray(frame(a->roi), &gray_);
+        gray_roi_ = a->roi;
+      }
+    }
+  }
 
   // No candidate within the area gate of the last boundary: at a low frame rate an object
   // approaching or receding fast grows or shrinks by more than the gate between frames. Search
@@ -273,7 +301,8 @@ bool Tracker::trusted(const Attempt& a, bool adapted) const {
          (!adapted || a.evidence.shape_change <= options_.loss.match_shape_distance);
 }
 
-Tracker::Attempt* Tracker::retry_weak(const cv::Mat& frame, Attempt* first, TrackResult* result) {
+Tracker::Attempt* Tracker::retry_weak(const cv::Mat& frame, Attempt* first, const Polygon& prior,
+                                      Attempt* retry, TrackResult* result) {
   assess(first, boundary_);
   const bool first_adapted = adapted_first_;
   if (trusted(*first, first_adapted)) return first;
@@ -284,7 +313,7 @@ Tracker::Attempt* Tracker::retry_weak(const cv::Mat& frame, Attempt* first, Trac
     AdaptiveThresholdOptions this_window = options_.adaptive_thresholds;
     this_window.enabled = true;
     this_window.smooth_noise = false;
-    adapt_to_frame(gray_, first->roi.tl(), predicted_, gradient_threshold_, anchor_threshold_,
+    adapt_to_frame(gray_, first->roi.tl(), prior, gradient_threshold_, anchor_threshold_,
                    this_window, nullptr, &thresholds);
     const bool smooths =
         options_.adaptive_thresholds.smooth_noise &&
@@ -294,8 +323,7 @@ Tracker::Attempt* Tracker::retry_weak(const cv::Mat& frame, Attempt* first, Trac
              first->thresholds.pre_smoothing == 0.0) {
     return first;  // the adapted search was the published one
   }
-  Attempt* retry = &attempts_[1];
-  attempt(frame, predicted_, retry, options_.min_area_similarity, !first_adapted);
+  attempt(frame, prior, retry, options_.min_area_similarity, !first_adapted);
   add_retry_times(*retry, result);
   assess(retry, boundary_);
   // Only a trusted boundary replaces the first search's: lowered thresholds find some closed cycle

@@ -98,6 +98,7 @@ class Tracker {
   double boundary_area_ = 0.0;
   cv::Size frame_size_;
   cv::Mat gray_;
+  cv::Rect gray_roi_;      // the window of the frame gray_ holds
   cv::Mat smoothed_gray_;  // gray_ smoothed for a noisy frame (AdaptiveThresholdOptions)
   // The grey window around the boundary the last time it was tracked, for re-finding it by
   // image motion when it is lost (TrackerOptions::recover_by_motion).
@@ -142,7 +143,9 @@ class Tracker {
   void assess(Attempt* a, const Polygon& previous) const;
   // AdaptiveThresholdOptions::retry_weak_frames: `first` or, when it was weak, the search again
   // with the other thresholds (adapted or published) if that found a more confident boundary.
-  Attempt* retry_weak(const cv::Mat& frame, Attempt* first, TrackResult* result);
+  // The retry searches around `prior` (first's) into `retry`.
+  Attempt* retry_weak(const cv::Mat& frame, Attempt* first, const Polygon& prior, Attempt* retry,
+                      TrackResult* result);
   // Whether an assessed attempt's boundary may be taken: trusted (LossOptions::tracking_confidence)
   // and, found with `adapted` thresholds, of the reference shape
   // (LossOptions::match_shape_distance).
@@ -183,7 +186,9 @@ class Tracker {
   void remember_reference(const cv::Mat& frame, const Attempt& a);
   // The statistics (and, when kept, the debug view) of the attempt whose boundary is reported.
   void report_attempt(const Attempt& a, TrackResult* result);
-  Attempt attempts_[2];
+  // [0] and [1]: the search where the boundary is predicted (and its threshold retry or a
+  // recovery); [2] and [3]: where it was, when a prediction found nothing trusted.
+  Attempt attempts_[4];
   LossMonitor monitor_;
   Reacquirer reacquirer_;
   SceneKeyframes keyframes_;     // confident views of the object's surroundings, for the search

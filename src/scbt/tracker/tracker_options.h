@@ -26,15 +26,18 @@ struct TrackerOptions {
   // tracked (phase correlation) and search again where it moved, instead of holding it in place.
   bool recover_by_motion = true;
   // Search around where the boundary's motion predicts it, rather than where it was in the last
-  // frame (docs/robustness-to-camera.md: helps at low frame rates; off until it is no worse
-  // under blur).
-  bool predict_motion = false;
+  // frame (docs/robustness-to-camera.md: at low frame rates and when the camera swings).
+  bool predict_motion = true;
   // ... that motion being the image motion around the boundary since the last tracked frame
   // (phase correlation), not the boundary's last displacement extrapolated (false), which is
   // noise when a noisy or blurred frame's chosen cycle jumped. Measured (~1 ms) only on frames
   // where the extrapolation moves the boundary by at least min_predicted_move x filter_distance:
   // slower motion stays well inside the search band.
   bool measure_motion = true;
+  // When the search where the boundary is predicted finds nothing trusted, search where it was as
+  // well; its boundary is taken when trusted and of the reference shape (a wrong prediction then
+  // costs a search, not the object).
+  bool fall_back_unmoved = true;
   double min_predicted_move = 0.25;
   // An extrapolated placement (and the growth-scaled retry) is searched only where the image
   // confirms it: its contrast profile (contrast_profile.h) must agree with the last tracked
