@@ -37,6 +37,11 @@ void add_tracker_options(CLI::App* command, TrackerOptions* options, std::string
                    "velocity extrapolated (true/false)")
       ->capture_default_str();
   command
+      ->add_option("--smooth-noisy-frames", options->smooth_noisy_frames,
+                   "Smooth a noisy camera's frames before line detection as their noise calls "
+                   "for, with the thresholds lowered accordingly (true/false)")
+      ->capture_default_str();
+  command
       ->add_option("--fall-back-unmoved", options->fall_back_unmoved,
                    "With --predict-motion: when nothing trusted is found where the motion "
                    "predicts the boundary, search where it was as well (true/false)")

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <opencv2/imgproc.hpp>
 #include <stdexcept>
 #include <string>
@@ -77,6 +78,7 @@ void Tracker::init(const cv::Mat& frame, const Polygon& polygon) {
   motion_.reset();
   motion_.update(boundary_);
   adapted_first_ = false;
+  noise_sigma_ = -1.0;
   appearance_.remember(frame, boundary_);
   monitor_.reset(polygon, sample_edges(polygon, reference_gray_, {0, 0}, 0.0).inside_level);
   pending_.clear();
@@ -101,6 +103,7 @@ void Tracker::attempt(const cv::Mat& frame, const Polygon& prior, Attempt* a, do
   to_gray(frame(a->roi), &gray_);
   gray_roi_ = a->roi;
   const cv::Mat* detect_on = &gray_;
+  bool thresholds_changed = adapt;
   if (adapt) {
     // Thresholds (and smoothing) for this window only
     // (AdaptiveThresholdOptions::retry_weak_frames).
@@ -109,6 +112,9 @@ void Tracker::attempt(const cv::Mat& frame, const Polygon& prior, Attempt* a, do
     detect_on = &adapt_to_frame(gray_, a->roi.tl(), prior, gradient_threshold_, anchor_threshold_,
                                 this_window, &smoothed_gray_, &a->thresholds);
     detector_->set_edge_thresholds(a->thresholds.gradient, a->thresholds.anchor);
+  } else if (options_.smooth_noisy_frames && !options_.adaptive_thresholds.enabled &&
+             detector_->adapts_thresholds()) {
+    detect_on = &smooth_if_noisy(gray_, &smoothed_gray_, &thresholds_changed);
   } else if (options_.adaptive_thresholds.enabled && detector_->adapts_thresholds()) {
     // Thresholds (and, for a noisy window, a smoothed copy to detect on) suited to this window.
     detect_on = &adapt_to_frame(gray_, a->roi.tl(), prior, gradient_threshold_, anchor_threshold_,
@@ -122,7 +128,7 @@ void Tracker::attempt(const cv::Mat& frame, const Polygon& prior, Attempt* a, do
   } else {
     a->detected = detector_->detect_in(*detect_on, a->roi.tl(), frame_size_);
   }
-  if (adapt) {
+  if (thresholds_changed) {
     detector_->set_edge_thresholds(gradient_threshold_, anchor_threshold_);
   }
   a->line_ms = elapsed_ms(line_start);
@@ -157,6 +163,28 @@ void Tracker::attempt(const cv::Mat& frame, const Polygon& prior, Attempt* a, do
   a->stages.choice_ms = lap();
   a->grouping_ms =
       a->stages.filter_ms + a->stages.graph_ms + a->stages.search_ms + a->stages.choice_ms;
+}
+
+const cv::Mat& Tracker::smooth_if_noisy(const cv::Mat& gray, cv::Mat* smoothed,
+                                        bool* thresholds_changed) {
+  // A camera's noise changes slowly: measured on every kNoiseInterval-th frame's first window.
+  constexpr int kNoiseInterval = 8;
+  if (noise_sigma_ < 0.0 || frames_since_noise_estimate_ >= kNoiseInterval) {
+    noise_sigma_ = estimate_noise_sigma(gray, 4);
+    frames_since_noise_estimate_ = 0;
+  }
+  const double sigma = smoothing_for_noise(noise_sigma_, options_.adaptive_thresholds);
+  if (sigma <= 0.0) return gray;
+  cv::GaussianBlur(gray, *smoothed, cv::Size(0, 0), sigma);
+  // A step edge's steepest gradient falls with the total smoothing, noise's much faster: the
+  // thresholds fall with the step's, so that an edge the published ones find is still found.
+  const double own = std::max(options_.detector.sigma, 0.5);
+  const double step_gain = own / std::sqrt(own * own + sigma * sigma);
+  detector_->set_edge_thresholds(
+      std::max(1, static_cast<int>(std::lround(gradient_threshold_ * step_gain))),
+      std::max(1, static_cast<int>(std::lround(anchor_threshold_ * step_gain))));
+  *thresholds_changed = true;
+  return *smoothed;
 }
 
 void Tracker::remember_reference(const cv::Mat& frame, const Attempt& a) {
@@ -346,6 +374,7 @@ TrackResult Tracker::track(const cv::Mat& frame) {
   if (frame.empty()) to_gray(frame, &gray_);  // throws
   check_frame_size(frame, frame_size_);
   scale_thresholds_to_exposure(frame);
+  ++frames_since_noise_estimate_;
   if (monitor_.state() == TrackState::kLost) return track_lost(frame);
   TrackResult result;
   Attempt* a = search(frame, &result);

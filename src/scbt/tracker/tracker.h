@@ -156,6 +156,12 @@ class Tracker {
   void scale_thresholds_to_exposure(const cv::Mat& frame);
   int gradient_threshold_;
   int anchor_threshold_;
+  // TrackerOptions::smooth_noisy_frames: `gray` smoothed into *smoothed when the camera's noise
+  // (Immerkaer's estimate, refreshed every few frames) calls for it, the detector's thresholds
+  // then lowered with the smoothing (*thresholds_changed set); otherwise `gray`.
+  const cv::Mat& smooth_if_noisy(const cv::Mat& gray, cv::Mat* smoothed, bool* thresholds_changed);
+  double noise_sigma_ = -1.0;  // grey levels; < 0: estimated on the next window
+  int frames_since_noise_estimate_ = 0;
   // TrackerOptions::measure_motion: predicted_ becomes the boundary moved by the image motion
   // around it since the last tracked frame, when its recent motion says it moves
   // (tracker_predict.cc).

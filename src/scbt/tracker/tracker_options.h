@@ -48,6 +48,11 @@ struct TrackerOptions {
   // EDLines thresholds scaled down on a frame of low contrast (dim or washed out), as if its
   // grey levels were stretched to half the 8-bit range (exposure.h).
   ExposureOptions exposure;
+  // A noisy camera's window is smoothed before detection as the weak-frame retry smooths it
+  // (AdaptiveThresholdOptions::smooth_noise, smoothed_noise), on every frame: noise ridges
+  // otherwise break the boundary into fragments that close neighbouring cycles. A window whose
+  // noise calls for less than 0.5 px of smoothing (every clean dataset frame) is left as it is.
+  bool smooth_noisy_frames = true;
   // Per-frame EDLines thresholds from the boundary's contrast and the image noise (edlines only).
   AdaptiveThresholdOptions adaptive_thresholds;
   BdspOptions bdsp;
