@@ -6,14 +6,6 @@
 namespace scbt {
 namespace {
 
-// Phase correlation runs only on the frames where tracking is lost, but there it cost more
-// than the rest of the frame's work many times over: ~5 ms for a 380x290 window (one core),
-// about 10 % of a whole sequence's mean time per frame on BookStand. Images whose larger side is
-// above this are averaged down by a power of two first (a 380x290 window to 190x145: ~1.2 ms);
-// the shift, scaled back, keeps about a pixel of precision, well inside the search band that a
-// recovery searches again.
-constexpr int kMaxSide = 200;
-
 // `image` (8-bit grey) averaged over factor x factor blocks, as 32-bit floats (the last columns
 // and rows that do not fill a block are left out, so that the scale is exactly `factor`).
 void to_float(const cv::Mat& image, int factor, cv::Mat* out) {
@@ -31,14 +23,14 @@ void to_float(const cv::Mat& image, int factor, cv::Mat* out) {
 }  // namespace
 
 std::optional<TranslationEstimate> estimate_translation(const cv::Mat& reference,
-                                                        const cv::Mat& current) {
+                                                        const cv::Mat& current, int max_side) {
   constexpr int kMinSide = 16;
   if (reference.size() != current.size() || reference.cols < kMinSide ||
       reference.rows < kMinSide || reference.type() != CV_8UC1 || current.type() != CV_8UC1) {
     return std::nullopt;
   }
   int factor = 1;
-  while (std::max(reference.cols, reference.rows) / factor > kMaxSide &&
+  while (std::max(reference.cols, reference.rows) / factor > max_side &&
          std::min(reference.cols, reference.rows) / (2 * factor) >= kMinSide) {
     factor *= 2;
   }

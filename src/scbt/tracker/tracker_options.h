@@ -31,8 +31,9 @@ struct TrackerOptions {
   // ... that motion being the image motion around the boundary since the last tracked frame
   // (phase correlation), not the boundary's last displacement extrapolated (false), which is
   // noise when a noisy or blurred frame's chosen cycle jumped. Measured (~1 ms) only on frames
-  // where the extrapolation moves the boundary by at least min_predicted_move x filter_distance:
-  // slower motion stays well inside the search band.
+  // where the extrapolation moves the boundary by at least min_predicted_move x filter_distance,
+  // and followed only when the image moved that far too: slower motion stays well inside the
+  // search band.
   bool measure_motion = true;
   // When the search where the boundary is predicted finds nothing trusted, search where it was as
   // well; its boundary is taken when trusted and of the reference shape (a wrong prediction then
