@@ -54,6 +54,26 @@ TEST(EstimateTranslation, RecoversShiftsOfLargeWindowsWithinAPixel) {
   }
 }
 
+// The tracker's coarse estimate (max_side 64: a 190x150 window averaged by 4) only has to tell
+// a move the search band absorbs (under 5 px) from a larger one, which is then measured in full.
+TEST(EstimateTranslation, CoarseEstimateTellsSmallFromLargeMoves) {
+  std::mt19937 rng(11);
+  std::uniform_int_distribution<int> small(-2, 2), large(8, 25), sign(0, 1);
+  const cv::Rect window(100, 100, 190, 150);
+  for (int trial = 0; trial < 20; ++trial) {
+    const cv::Mat scene = random_texture({400, 360}, 500 + trial);
+    const cv::Point still(small(rng), small(rng));
+    const cv::Point moved(large(rng) * (sign(rng) ? 1 : -1), small(rng) * 4);
+    const std::optional<TranslationEstimate> small_move =
+        estimate_translation(scene(window), scene(window - still), 64);
+    const std::optional<TranslationEstimate> large_move =
+        estimate_translation(scene(window), scene(window - moved), 64);
+    ASSERT_TRUE(small_move.has_value() && large_move.has_value());
+    EXPECT_LT(cv::norm(small_move->shift), 5.0) << "trial " << trial << " moved " << still;
+    EXPECT_GE(cv::norm(large_move->shift), 5.0) << "trial " << trial << " moved " << moved;
+  }
+}
+
 TEST(EstimateTranslation, RejectsMismatchedOrTinyImages) {
   const cv::Mat a = random_texture({64, 64}, 1);
   EXPECT_FALSE(estimate_translation(a, a(cv::Rect(0, 0, 32, 64)).clone()).has_value());
