@@ -128,6 +128,7 @@ int main(int argc, char** argv) {
   app.add_option("--confirm-motion", options.confirm_motion);
   app.add_option("--measure-motion", options.measure_motion);
   app.add_option("--fall-back-unmoved", options.fall_back_unmoved);
+  app.add_option("--gate-sustained-shrink", options.gate_sustained_shrink);
   app.add_option("--smooth-noisy-frames", options.smooth_noisy_frames);
   app.add_option("--min-predicted-move", options.min_predicted_move);
   app.add_option("--min-motion-agreement", options.min_motion_agreement);

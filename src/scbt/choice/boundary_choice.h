@@ -46,6 +46,7 @@ std::optional<BoundaryChoice> choose_boundary(const std::vector<CycleCandidate>&
 // listed. Chooses exactly as the straightforward choose_boundary_stable
 // (reference/plain_choice.h) does, distances equal up to rounding.
 // `known` (optional): distances to `previous` already computed for the graph's segments.
+// `gate_area` (when > 0): the area the gate compares candidates with instead of `previous`'s.
 class StableChooser {
  public:
   template <class Candidate, class ListVertices>
@@ -53,7 +54,8 @@ class StableChooser {
                                        ListVertices&& list_vertices, const SegmentGraph& graph,
                                        const Polygon& previous, double min_similarity,
                                        double tolerance,
-                                       const KnownSegmentDistances* known = nullptr);
+                                       const KnownSegmentDistances* known = nullptr,
+                                       double gate_area = 0.0);
 
  private:
   struct NearTie {
@@ -81,13 +83,11 @@ class StableChooser {
 };
 
 template <class Candidate, class ListVertices>
-std::optional<BoundaryChoice> StableChooser::choose(const std::vector<Candidate>& candidates,
-                                                    ListVertices&& list_vertices,
-                                                    const SegmentGraph& graph,
-                                                    const Polygon& previous, double min_similarity,
-                                                    double tolerance,
-                                                    const KnownSegmentDistances* known) {
-  const double previous_area = area(previous);
+std::optional<BoundaryChoice> StableChooser::choose(
+    const std::vector<Candidate>& candidates, ListVertices&& list_vertices,
+    const SegmentGraph& graph, const Polygon& previous, double min_similarity, double tolerance,
+    const KnownSegmentDistances* known, double gate_area) {
+  const double previous_area = gate_area > 0.0 ? gate_area : area(previous);
   BoundaryChoice best;
   // Each candidate's cost, kept for the near-tie pass below (NaN: not admissible, so that no
   // comparison admits it), so that the divisions are done once per candidate (hundreds of

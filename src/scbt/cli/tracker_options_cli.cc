@@ -47,6 +47,11 @@ void add_tracker_options(CLI::App* command, TrackerOptions* options, std::string
                    "predicts the boundary, search where it was as well (true/false)")
       ->capture_default_str();
   command
+      ->add_option("--gate-sustained-shrink", options->gate_sustained_shrink,
+                   "With --predict-motion: when the boundary shrinks steadily, the area gate "
+                   "compares candidates with its shrunken area (true/false)")
+      ->capture_default_str();
+  command
       ->add_option("--seed-stride", options->bdsp.seed_stride,
                    "BDSP seeds every Nth detected segment (the paper: 2)")
       ->capture_default_str();

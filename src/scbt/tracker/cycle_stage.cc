@@ -5,10 +5,11 @@ namespace scbt {
 std::optional<BoundaryChoice> CycleStage::choose(StableChooser* chooser, const SegmentGraph& graph,
                                                  const Polygon& previous, double min_similarity,
                                                  double tolerance,
-                                                 const KnownSegmentDistances* known) const {
+                                                 const KnownSegmentDistances* known,
+                                                 double gate_area) const {
   return chooser->choose(
       summaries(), [this](int index, std::vector<int>* cycle) { vertices(index, cycle); }, graph,
-      previous, min_similarity, tolerance, known);
+      previous, min_similarity, tolerance, known, gate_area);
 }
 
 Polygon CycleStage::polygon(const SegmentGraph& graph, int index) const {

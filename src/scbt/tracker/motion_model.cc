@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace scbt {
 
@@ -28,6 +29,7 @@ void MotionModel::reset() {
   velocity_ = Point(0.0, 0.0);
   log_area_rate_ = 0.0;
   frames_since_last_ = 1;
+  num_rates_ = 0;
 }
 
 void MotionModel::update(const Polygon& tracked) {
@@ -36,6 +38,8 @@ void MotionModel::update(const Polygon& tracked) {
   if (has_last_) {
     velocity_ = (centroid - last_centroid_) * (1.0 / frames_since_last_);
     log_area_rate_ = (log_area - last_log_area_) / frames_since_last_;
+    recent_rates_[num_rates_ % kSustainedSteps] = log_area_rate_;
+    ++num_rates_;
   }
   last_centroid_ = centroid;
   last_log_area_ = log_area;
@@ -47,6 +51,16 @@ void MotionModel::update_held() { ++frames_since_last_; }
 
 double MotionModel::predicted_area_ratio() const {
   return std::exp(log_area_rate_ * frames_since_last_);
+}
+
+double MotionModel::sustained_shrink_ratio() const {
+  if (num_rates_ < kSustainedSteps) return 1.0;
+  double slowest = -std::numeric_limits<double>::infinity();
+  for (double rate : recent_rates_) {
+    if (!(rate < 0.0)) return 1.0;
+    slowest = std::max(slowest, rate);
+  }
+  return std::exp(slowest * frames_since_last_);
 }
 
 void MotionModel::predict(const Polygon& last, bool with_scale, Polygon* predicted) const {

@@ -23,6 +23,9 @@ class MotionModel {
   void predict(const Polygon& last, bool with_scale, Polygon* predicted) const;
   // The predicted area of the next frame's boundary over the last tracked one's.
   double predicted_area_ratio() const;
+  // The same for a steady shrinking only: from the slowest of the last kSustainedSteps growth
+  // rates when all of them are negative, else 1.
+  double sustained_shrink_ratio() const;
 
  private:
   bool has_last_ = false;
@@ -31,6 +34,9 @@ class MotionModel {
   Point velocity_;              // centroid motion per frame
   double log_area_rate_ = 0.0;  // d(log area) per frame
   int frames_since_last_ = 1;   // frames from the last tracked one to the next to be tracked
+  static constexpr int kSustainedSteps = 3;
+  double recent_rates_[kSustainedSteps] = {};  // the last log_area_rate_ values, oldest replaced
+  int num_rates_ = 0;
 };
 
 // The centroid of a closed polygon's area (the vertex mean when the area vanishes).

@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 namespace scbt {
 namespace {
 
@@ -55,6 +57,31 @@ TEST(MotionModel, ExtrapolatesTranslationAndGrowthAcrossHeldFrames) {
   model.update(square({0, 0}, 5));
   model.predict(square({0, 0}, 5), true, &predicted);
   EXPECT_NEAR(area_centroid(predicted).x, 0.0, 1e-12);
+}
+
+// Half sizes whose areas shrink by 10 %, 20 % and 5 % per frame: the slowest, 5 %, is followed
+// (also over a held frame); one growing frame among them, or fewer than three rates, follows none.
+TEST(MotionModel, SustainedShrinkFollowsOnlyASteadyShrinking) {
+  MotionModel model;
+  double half = 20.0;
+  model.update(square({50, 50}, half));
+  for (const double area_ratio : {0.9, 0.8}) {
+    EXPECT_DOUBLE_EQ(model.sustained_shrink_ratio(), 1.0);
+    half *= std::sqrt(area_ratio);
+    model.update(square({50, 50}, half));
+  }
+  EXPECT_DOUBLE_EQ(model.sustained_shrink_ratio(), 1.0);
+  half *= std::sqrt(0.95);
+  model.update(square({50, 50}, half));
+  EXPECT_NEAR(model.sustained_shrink_ratio(), 0.95, 1e-9);
+  model.update_held();
+  EXPECT_NEAR(model.sustained_shrink_ratio(), 0.95 * 0.95, 1e-9);
+  half *= 1.01;
+  model.update(square({50, 50}, half));
+  EXPECT_DOUBLE_EQ(model.sustained_shrink_ratio(), 1.0);
+  model.reset();
+  model.update(square({50, 50}, 20.0));
+  EXPECT_DOUBLE_EQ(model.sustained_shrink_ratio(), 1.0);
 }
 
 }  // namespace

@@ -159,7 +159,7 @@ void Tracker::attempt(const cv::Mat& frame, const Polygon& prior, Attempt* a, do
   KnownSegmentDistances known{&a->kept, &a->kept_distances};
   const KnownSegmentDistances* known_if_any = a->num_dropped == 0 ? &known : nullptr;
   a->choice = a->cycles->choose(&chooser_, a->graph, prior, min_similarity, options_.cost_tolerance,
-                                known_if_any);
+                                known_if_any, gate_area_);
   a->stages.choice_ms = lap();
   a->grouping_ms =
       a->stages.filter_ms + a->stages.graph_ms + a->stages.search_ms + a->stages.choice_ms;
@@ -232,6 +232,13 @@ Tracker::Attempt* Tracker::search(const cv::Mat& frame, TrackResult* result) {
   } else {
     predicted_ = boundary_;
   }
+  // At a low frame rate an object receding steadily shrinks by more than the gate between frames.
+  // The gate then compares with the shrunken area; never with a grown one, since Γ already favours
+  // larger cycles and a cycle creeping outward grows steadily too.
+  gate_area_ = options_.predict_motion && options_.gate_sustained_shrink &&
+                       monitor_.state() != TrackState::kLost
+                   ? boundary_area_ * motion_.sustained_shrink_ratio()
+                   : 0.0;
   // Not while lost: the search there (tracker_resume.cc) asks for the last confident shape, which
   // the published thresholds found; lowered ones invite a different cycle in its place.
   const bool retry_weak_frames =
@@ -270,6 +277,8 @@ Tracker::Attempt* Tracker::search(const cv::Mat& frame, TrackResult* result) {
       }
     }
   }
+
+  gate_area_ = 0.0;  // the searches below compare with their own prior's area
 
   // No candidate within the area gate of the last boundary: at a low frame rate an object
   // approaching or receding fast grows or shrinks by more than the gate between frames. Search

@@ -104,7 +104,9 @@ class Tracker {
   // image motion when it is lost (TrackerOptions::recover_by_motion).
   cv::Mat reference_gray_;
   cv::Rect reference_roi_;
-  MotionModel motion_;    // predicts where the boundary goes next (TrackerOptions::predict_motion)
+  MotionModel motion_;  // predicts where the boundary goes next (TrackerOptions::predict_motion)
+  // The area the gate (Eq. 2) compares candidates with during a search (0: the prior's own).
+  double gate_area_ = 0.0;
   Polygon predicted_;     // where this frame's search looks (reused buffer)
   Polygon extrapolated_;  // where the boundary's last velocity puts it (place_by_image_motion)
   BoundaryAppearance appearance_;  // confirms predictions (TrackerOptions::confirm_motion)

@@ -39,6 +39,10 @@ struct TrackerOptions {
   // well; its boundary is taken when trusted and of the reference shape (a wrong prediction then
   // costs a search, not the object).
   bool fall_back_unmoved = true;
+  // With predict_motion: when the boundary's last three growth rates all shrink it, the area
+  // gate (Eq. 2) compares candidates with its area shrunk at the slowest of them, so that an
+  // object receding steadily at a low frame rate is not gated out.
+  bool gate_sustained_shrink = true;
   double min_predicted_move = 0.25;
   // An extrapolated placement (and the growth-scaled retry) is searched only where the image
   // confirms it: its contrast profile (contrast_profile.h) must agree with the last tracked
