@@ -16,9 +16,10 @@ struct TranslationEstimate {
 
 // Phase correlation (cv::phaseCorrelate with a Hann window) between two 8-bit grey images of the
 // same size; images larger than `max_side` px on a side are first averaged down by a power of two
-// (the shift is scaled back: about `factor` px of precision). std::nullopt when the images are too
-// small or differ in size. The default keeps a 380x290 window to ~1.2 ms (one core) instead of
-// ~5 ms, with about a pixel of precision, well inside the search band searched around it.
+// (the shift is scaled back: about as many px of precision as the factor). std::nullopt when the
+// images are too small or differ in size. The default keeps a 380x290 window to ~1.2 ms (one core)
+// instead of ~5 ms, with about a pixel of precision, well inside the search band searched around
+// it.
 std::optional<TranslationEstimate> estimate_translation(const cv::Mat& reference,
                                                         const cv::Mat& current, int max_side = 200);
 

@@ -87,7 +87,7 @@ void Tracker::init(const cv::Mat& frame, const Polygon& polygon) {
 }
 
 void Tracker::attempt(const cv::Mat& frame, const Polygon& prior, Attempt* a, double min_similarity,
-                      bool adapt) {
+                      bool adapt, double gate_area) {
   a->num_dropped = 0;
   a->choice.reset();
   a->assessed = false;
@@ -159,7 +159,7 @@ void Tracker::attempt(const cv::Mat& frame, const Polygon& prior, Attempt* a, do
   KnownSegmentDistances known{&a->kept, &a->kept_distances};
   const KnownSegmentDistances* known_if_any = a->num_dropped == 0 ? &known : nullptr;
   a->choice = a->cycles->choose(&chooser_, a->graph, prior, min_similarity, options_.cost_tolerance,
-                                known_if_any, gate_area_);
+                                known_if_any, gate_area);
   a->stages.choice_ms = lap();
   a->grouping_ms =
       a->stages.filter_ms + a->stages.graph_ms + a->stages.search_ms + a->stages.choice_ms;
@@ -235,10 +235,10 @@ Tracker::Attempt* Tracker::search(const cv::Mat& frame, TrackResult* result) {
   // At a low frame rate an object receding steadily shrinks by more than the gate between frames.
   // The gate then compares with the shrunken area; never with a grown one, since Γ already favours
   // larger cycles and a cycle creeping outward grows steadily too.
-  gate_area_ = options_.predict_motion && options_.gate_sustained_shrink &&
-                       monitor_.state() != TrackState::kLost
-                   ? boundary_area_ * motion_.sustained_shrink_ratio()
-                   : 0.0;
+  const double gate_area = options_.predict_motion && options_.gate_sustained_shrink &&
+                                   monitor_.state() != TrackState::kLost
+                               ? boundary_area_ * motion_.sustained_shrink_ratio()
+                               : 0.0;
   // Not while lost: the search there (tracker_resume.cc) asks for the last confident shape, which
   // the published thresholds found; lowered ones invite a different cycle in its place.
   const bool retry_weak_frames =
@@ -246,11 +246,11 @@ Tracker::Attempt* Tracker::search(const cv::Mat& frame, TrackResult* result) {
       detector_->adapts_thresholds() && monitor_.state() != TrackState::kLost;
   const bool adapted_first = retry_weak_frames && adapted_first_;
   Attempt* a = &attempts_[0];
-  attempt(frame, predicted_, a, options_.min_area_similarity, adapted_first);
+  attempt(frame, predicted_, a, options_.min_area_similarity, adapted_first, gate_area);
   result->line_ms = a->line_ms;
   result->grouping_ms = a->grouping_ms;
   result->stages = a->stages;
-  if (retry_weak_frames) a = retry_weak(frame, a, predicted_, &attempts_[1], result);
+  if (retry_weak_frames) a = retry_weak(frame, a, predicted_, &attempts_[1], result, gate_area);
 
   // A prediction can be wrong (a blurred frame's measured motion, a camera that stopped): when
   // nothing trusted was found where it points, where the boundary was is searched as well.
@@ -260,9 +260,11 @@ Tracker::Attempt* Tracker::search(const cv::Mat& frame, TrackResult* result) {
       const bool adapted_before = adapted_first_;
       adapted_first_ = adapted_first;
       Attempt* unmoved = &attempts_[2];
-      attempt(frame, boundary_, unmoved, options_.min_area_similarity, adapted_first);
+      attempt(frame, boundary_, unmoved, options_.min_area_similarity, adapted_first, gate_area);
       add_retry_times(*unmoved, result);
-      if (retry_weak_frames) unmoved = retry_weak(frame, unmoved, boundary_, &attempts_[3], result);
+      if (retry_weak_frames) {
+        unmoved = retry_weak(frame, unmoved, boundary_, &attempts_[3], result, gate_area);
+      }
       if (!unmoved->assessed) assess(unmoved, boundary_);
       // A second search tests more cycles: its boundary must also keep the reference shape.
       if (trusted(*unmoved, /*adapted=*/true)) {
@@ -277,8 +279,6 @@ Tracker::Attempt* Tracker::search(const cv::Mat& frame, TrackResult* result) {
       }
     }
   }
-
-  gate_area_ = 0.0;  // the searches below compare with their own prior's area
 
   // No candidate within the area gate of the last boundary: at a low frame rate an object
   // approaching or receding fast grows or shrinks by more than the gate between frames. Search
@@ -339,7 +339,7 @@ bool Tracker::trusted(const Attempt& a, bool adapted) const {
 }
 
 Tracker::Attempt* Tracker::retry_weak(const cv::Mat& frame, Attempt* first, const Polygon& prior,
-                                      Attempt* retry, TrackResult* result) {
+                                      Attempt* retry, TrackResult* result, double gate_area) {
   assess(first, boundary_);
   const bool first_adapted = adapted_first_;
   if (trusted(*first, first_adapted)) return first;
@@ -360,7 +360,7 @@ Tracker::Attempt* Tracker::retry_weak(const cv::Mat& frame, Attempt* first, cons
              first->thresholds.pre_smoothing == 0.0) {
     return first;  // the adapted search was the published one
   }
-  attempt(frame, prior, retry, options_.min_area_similarity, !first_adapted);
+  attempt(frame, prior, retry, options_.min_area_similarity, !first_adapted, gate_area);
   add_retry_times(*retry, result);
   assess(retry, boundary_);
   // Only a trusted boundary replaces the first search's: lowered thresholds find some closed cycle

@@ -104,9 +104,7 @@ class Tracker {
   // image motion when it is lost (TrackerOptions::recover_by_motion).
   cv::Mat reference_gray_;
   cv::Rect reference_roi_;
-  MotionModel motion_;  // predicts where the boundary goes next (TrackerOptions::predict_motion)
-  // The area the gate (Eq. 2) compares candidates with during a search (0: the prior's own).
-  double gate_area_ = 0.0;
+  MotionModel motion_;    // predicts where the boundary goes next (TrackerOptions::predict_motion)
   Polygon predicted_;     // where this frame's search looks (reused buffer)
   Polygon extrapolated_;  // where the boundary's last velocity puts it (place_by_image_motion)
   BoundaryAppearance appearance_;  // confirms predictions (TrackerOptions::confirm_motion)
@@ -133,9 +131,10 @@ class Tracker {
     BoundaryEvidence evidence;
     double confidence = 0.0;
   };
-  // `adapt`: with thresholds (and smoothing) adapted to this window (retry_weak).
+  // `adapt`: with thresholds (and smoothing) adapted to this window (retry_weak). `gate_area`
+  // (when > 0): the area the gate (Eq. 2) compares candidates with instead of the prior's.
   void attempt(const cv::Mat& frame, const Polygon& prior, Attempt* a, double min_similarity,
-               bool adapt = false);
+               bool adapt = false, double gate_area = 0.0);
   // A tracking frame's search around the boundary: where it is (or its motion predicts it), then
   // with its predicted growth, then where the image moved it. Returns the attempt to use (its
   // choice empty when nothing qualified); `result` gets the times.
@@ -145,9 +144,9 @@ class Tracker {
   void assess(Attempt* a, const Polygon& previous) const;
   // AdaptiveThresholdOptions::retry_weak_frames: `first` or, when it was weak, the search again
   // with the other thresholds (adapted or published) if that found a more confident boundary.
-  // The retry searches around `prior` (first's) into `retry`.
+  // The retry searches around `prior` (first's, with first's `gate_area`) into `retry`.
   Attempt* retry_weak(const cv::Mat& frame, Attempt* first, const Polygon& prior, Attempt* retry,
-                      TrackResult* result);
+                      TrackResult* result, double gate_area);
   // Whether an assessed attempt's boundary may be taken: trusted (LossOptions::tracking_confidence)
   // and, found with `adapted` thresholds, of the reference shape
   // (LossOptions::match_shape_distance).

@@ -15,7 +15,8 @@ void Tracker::place_by_image_motion(const cv::Mat& frame) {
   // the object goes and is not followed.
   motion_.predict(boundary_, /*with_scale=*/false, &extrapolated_);
   const Point step = area_centroid(extrapolated_) - area_centroid(boundary_);
-  if (cv::norm(step) < options_.min_predicted_move * options_.filter_distance) return;
+  const double min_move = options_.min_predicted_move * options_.filter_distance;
+  if (cv::norm(step) < min_move) return;
   if (reference_gray_.empty()) return;
   to_gray(frame(reference_roi_), &cut_gray_);
   // A move the band absorbs is not followed: on a compressed or low-resolution frame the
@@ -25,10 +26,7 @@ void Tracker::place_by_image_motion(const cv::Mat& frame) {
   constexpr int kCoarseSide = 64;
   std::optional<TranslationEstimate> image_motion =
       estimate_translation(reference_gray_, cut_gray_, kCoarseSide);
-  if (!image_motion ||
-      cv::norm(image_motion->shift) < options_.min_predicted_move * options_.filter_distance) {
-    return;
-  }
+  if (!image_motion || cv::norm(image_motion->shift) < min_move) return;
   image_motion = estimate_translation(reference_gray_, cut_gray_);
   if (!image_motion) return;
   for (Point& p : predicted_) p += image_motion->shift;
