@@ -98,6 +98,7 @@ double boundary_edge_strength(const cv::Mat& gray, cv::Point offset, const Polyg
   double along = 0.5 * step;  // arc length of the next sample
   double edge_start = 0.0;
   const int reach_px = static_cast<int>(std::ceil(reach));
+  std::vector<double> across(2 * reach_px + 3);
   for (size_t i = 0; i < n && static_cast<int>(strengths.size()) < samples; ++i) {
     const Point a = boundary[i] - Point(offset.x, offset.y);
     const Point b = boundary[(i + 1) % n] - Point(offset.x, offset.y);
@@ -109,16 +110,19 @@ double boundary_edge_strength(const cv::Mat& gray, cv::Point offset, const Polyg
       const Point p = a + t * (along - edge_start);
       if (p.x < 1 || p.y < 1 || p.x > gray.cols - 2 || p.y > gray.rows - 2) continue;
       // The steepest slope across the boundary, each difference averaged over three points
-      // along it to damp noise.
-      double best = 0.0;
-      for (int k = -reach_px; k <= reach_px; ++k) {
-        double diff = 0.0;
+      // along it to damp noise: the grey levels across it (summed along it) are read once, and
+      // the slope at k is the difference of those at k + 1 and k - 1.
+      for (int m = -reach_px - 1; m <= reach_px + 1; ++m) {
+        double sum = 0.0;
         for (int j = -1; j <= 1; ++j) {
-          const Point q = p + normal * k + t * j;
-          diff += sample(gray, q.x + normal.x, q.y + normal.y) -
-                  sample(gray, q.x - normal.x, q.y - normal.y);
+          const Point q = p + normal * m + t * j;
+          sum += sample(gray, q.x, q.y);
         }
-        best = std::max(best, std::abs(diff) / 6.0);
+        across[m + reach_px + 1] = sum;
+      }
+      double best = 0.0;
+      for (int k = 1; k <= 2 * reach_px + 1; ++k) {
+        best = std::max(best, std::abs(across[k + 1] - across[k - 1]) / 6.0);
       }
       strengths.push_back(8.0 * best);
     }

@@ -8,22 +8,22 @@ namespace {
 
 // `image` (8-bit grey) averaged over factor x factor blocks, as 32-bit floats (the last columns
 // and rows that do not fill a block are left out, so that the scale is exactly `factor`).
-void to_float(const cv::Mat& image, int factor, cv::Mat* out) {
+void to_float(const cv::Mat& image, int factor, cv::Mat* averaged, cv::Mat* out) {
   if (factor == 1) {
     image.convertTo(*out, CV_32F);
     return;
   }
   const cv::Size small(image.cols / factor, image.rows / factor);
-  cv::Mat averaged;
-  cv::resize(image(cv::Rect(0, 0, small.width * factor, small.height * factor)), averaged, small,
+  cv::resize(image(cv::Rect(0, 0, small.width * factor, small.height * factor)), *averaged, small,
              0.0, 0.0, cv::INTER_AREA);
-  averaged.convertTo(*out, CV_32F);
+  averaged->convertTo(*out, CV_32F);
 }
 
 }  // namespace
 
-std::optional<TranslationEstimate> estimate_translation(const cv::Mat& reference,
-                                                        const cv::Mat& current, int max_side) {
+std::optional<TranslationEstimate> TranslationEstimator::estimate(const cv::Mat& reference,
+                                                                  const cv::Mat& current,
+                                                                  int max_side) {
   constexpr int kMinSide = 16;
   if (reference.size() != current.size() || reference.cols < kMinSide ||
       reference.rows < kMinSide || reference.type() != CV_8UC1 || current.type() != CV_8UC1) {
@@ -34,15 +34,22 @@ std::optional<TranslationEstimate> estimate_translation(const cv::Mat& reference
          std::min(reference.cols, reference.rows) / (2 * factor) >= kMinSide) {
     factor *= 2;
   }
-  cv::Mat reference_float, current_float, window;
-  to_float(reference, factor, &reference_float);
-  to_float(current, factor, &current_float);
-  cv::createHanningWindow(window, reference_float.size(), CV_32F);
+  to_float(reference, factor, &averaged_, &reference_float_);
+  to_float(current, factor, &averaged_, &current_float_);
+  if (window_.size() != reference_float_.size()) {
+    cv::createHanningWindow(window_, reference_float_.size(), CV_32F);
+  }
   TranslationEstimate estimate;
   const cv::Point2d shift =
-      cv::phaseCorrelate(reference_float, current_float, window, &estimate.response);
+      cv::phaseCorrelate(reference_float_, current_float_, window_, &estimate.response);
   estimate.shift = Point(shift.x * factor, shift.y * factor);
   return estimate;
+}
+
+std::optional<TranslationEstimate> estimate_translation(const cv::Mat& reference,
+                                                        const cv::Mat& current, int max_side) {
+  TranslationEstimator estimator;
+  return estimator.estimate(reference, current, max_side);
 }
 
 }  // namespace scbt

@@ -74,6 +74,28 @@ TEST(EstimateTranslation, CoarseEstimateTellsSmallFromLargeMoves) {
   }
 }
 
+// The tracker keeps one estimator: its buffers and cached window, reused across window sizes and
+// resolutions, give exactly what a fresh estimate gives.
+TEST(EstimateTranslation, AReusedEstimatorGivesWhatAFreshOneGives) {
+  std::mt19937 rng(13);
+  std::uniform_int_distribution<int> shift(-12, 12), side(60, 260);
+  TranslationEstimator reused;
+  for (int trial = 0; trial < 30; ++trial) {
+    const cv::Mat scene = random_texture({420, 420}, 700 + trial);
+    const cv::Rect window(60, 60, side(rng), side(rng));
+    const cv::Mat current = scene(window - cv::Point(shift(rng), shift(rng)));
+    const int max_side = trial % 3 == 0 ? 64 : 200;
+    const std::optional<TranslationEstimate> fresh =
+        estimate_translation(scene(window), current, max_side);
+    const std::optional<TranslationEstimate> again =
+        reused.estimate(scene(window), current, max_side);
+    ASSERT_TRUE(fresh.has_value() && again.has_value());
+    EXPECT_EQ(fresh->shift.x, again->shift.x) << "trial " << trial;
+    EXPECT_EQ(fresh->shift.y, again->shift.y) << "trial " << trial;
+    EXPECT_EQ(fresh->response, again->response) << "trial " << trial;
+  }
+}
+
 TEST(EstimateTranslation, RejectsMismatchedOrTinyImages) {
   const cv::Mat a = random_texture({64, 64}, 1);
   EXPECT_FALSE(estimate_translation(a, a(cv::Rect(0, 0, 32, 64)).clone()).has_value());

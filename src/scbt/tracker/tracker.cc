@@ -303,7 +303,7 @@ Tracker::Attempt* Tracker::search(const cv::Mat& frame, TrackResult* result) {
     cv::Mat current;
     to_gray(frame(reference_roi_), &current);
     const std::optional<TranslationEstimate> motion =
-        estimate_translation(reference_gray_, current);
+        translation_.estimate(reference_gray_, current);
     result->stages.recovery_ms = elapsed_ms(recover_start);
     result->grouping_ms += result->stages.recovery_ms;
     // A move well inside the search band was already searched; re-searching near the same place

@@ -12,6 +12,7 @@
 #include "scbt/tracker/contrast_profile.h"
 #include "scbt/tracker/cycle_stage.h"
 #include "scbt/tracker/frame_checks.h"
+#include "scbt/tracker/motion_estimate.h"
 #include "scbt/tracker/motion_model.h"
 #include "scbt/tracker/reacquire.h"
 #include "scbt/tracker/reacquire_view_change.h"
@@ -202,6 +203,7 @@ class Tracker {
   ViewChangeMatch view_change_;  // matches seen from another distance or angle, while lost
   cv::Mat search_gray_;          // the whole frame in grey, while lost
   cv::Mat cut_gray_;             // the motion reference's window in this frame (check_view_cut)
+  TranslationEstimator translation_;  // image motion since the reference, its buffers reused
   // A cycle that matched while lost, waiting for LossOptions::confirm_frames matches in a row.
   Polygon pending_;
   // The output while lost: the boundary when the object was declared lost. boundary_ meanwhile

@@ -25,9 +25,9 @@ void Tracker::place_by_image_motion(const cv::Mat& frame) {
   // estimate, about a sixteenth of the cost, decides; a larger move is measured again in full.
   constexpr int kCoarseSide = 64;
   std::optional<TranslationEstimate> image_motion =
-      estimate_translation(reference_gray_, cut_gray_, kCoarseSide);
+      translation_.estimate(reference_gray_, cut_gray_, kCoarseSide);
   if (!image_motion || cv::norm(image_motion->shift) < min_move) return;
-  image_motion = estimate_translation(reference_gray_, cut_gray_);
+  image_motion = translation_.estimate(reference_gray_, cut_gray_);
   if (!image_motion) return;
   for (Point& p : predicted_) p += image_motion->shift;
 }
