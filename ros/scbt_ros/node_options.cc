@@ -131,9 +131,9 @@ std::optional<std::vector<double>> read_numbers(const ros::NodeHandle& node,
 // The parameters the node reads, without the leading '~'.
 const std::vector<std::string>& known_parameters() {
   static const std::vector<std::string> names = {
-      "detector", "filter_distance", "min_area_similarity", "cost_tolerance", "recover_by_motion",
-      "seed_stride", "gradient_threshold", "anchor_threshold", "min_line_length", "max_segments",
-      "use_depth", "sync_queue_size", "init_polygon", "init_box",
+      "detector", "filter_distance", "min_area_similarity", "cost_tolerance", "similarity_exponent",
+      "recover_by_motion", "seed_stride", "gradient_threshold", "anchor_threshold",
+      "min_line_length", "max_segments", "use_depth", "sync_queue_size", "init_polygon", "init_box",
       // Read by image_transport: which transport (raw, compressed, ...) to subscribe with.
       "image_transport"};
   return names;
@@ -171,6 +171,7 @@ NodeOptions read_node_options(const ros::NodeHandle& node) {
   read_double(node, "filter_distance", &t.filter_distance);
   read_double(node, "min_area_similarity", &t.min_area_similarity);
   read_double(node, "cost_tolerance", &t.cost_tolerance);
+  read_double(node, "similarity_exponent", &t.similarity_exponent);
   read_bool(node, "recover_by_motion", &t.recover_by_motion);
   read_int(node, "seed_stride", &t.bdsp.seed_stride);
   read_int(node, "gradient_threshold", &t.detector.gradient_threshold);

@@ -208,6 +208,46 @@ TEST(ChooseBoundaryStable, NearTiePicksTheCandidateClosestToThePrevious) {
   EXPECT_FALSE(choose_boundary_stable(made.candidates, made.graph, big, 0.9, 2.0).has_value());
 }
 
+// A cycle that creeps outward: 10 % more area than the previous boundary and 12 % cheaper, mostly
+// for its area (Γ = gap / area). The paper's ranking takes it; with Γ / S^0.5 it costs 8 %
+// less instead, a near tie that the previous boundary's own cycle wins.
+TEST(ChooseBoundaryStable, SimilarityExponentStopsACycleCreepingOutward) {
+  const Polygon previous = regular(6, Point(300, 240), 80.0, 0.3);
+  const double gap = 12.0;
+  const double scale = std::sqrt(1.1);
+  HandMade made;
+  made.add(previous, gap);
+  made.add(regular(6, Point(300, 240), 80.0 * scale, 0.3), gap * 1.1 * 0.88);
+  const double ratio = grouping_cost(made.candidates[1].gap_length, made.candidates[1].area) /
+                       grouping_cost(made.candidates[0].gap_length, made.candidates[0].area);
+  ASSERT_NEAR(ratio, 0.88, 1e-9);
+  const auto paper_ranking =
+      choose_boundary_stable(made.candidates, made.graph, previous, 0.9, 0.1);
+  ASSERT_TRUE(paper_ranking);
+  EXPECT_EQ(paper_ranking->index, 1);
+  const auto with_exponent =
+      choose_boundary_stable(made.candidates, made.graph, previous, 0.9, 0.1, 0.5);
+  ASSERT_TRUE(with_exponent);
+  EXPECT_EQ(with_exponent->index, 0);
+  // The reported cost stays Γ, the similarity the gate's.
+  EXPECT_DOUBLE_EQ(with_exponent->cost, gap / made.candidates[0].area);
+  // Without the near-tie rule the exponent alone does not reverse a 12 % lead.
+  const auto no_tolerance =
+      choose_boundary_stable(made.candidates, made.graph, previous, 0.9, 0.0, 0.5);
+  ASSERT_TRUE(no_tolerance);
+  EXPECT_EQ(no_tolerance->index, 1);
+  // A still boundary (S = 1) is ranked as before: the exponent only weighs a change of area.
+  HandMade still;
+  still.add(regular(6, Point(302, 240), 80.0, 0.3), gap);
+  still.add(regular(6, Point(330, 240), 80.0, 0.3), gap * 0.5);
+  for (const double k : {0.0, 0.5, 2.0}) {
+    const auto chosen =
+        choose_boundary_stable(still.candidates, still.graph, previous, 0.9, 0.1, k);
+    ASSERT_TRUE(chosen);
+    EXPECT_EQ(chosen->index, 1) << "k " << k;
+  }
+}
+
 TEST(BoundaryDistance, IdentitySymmetryAndTranslation) {
   std::mt19937 rng(77);
   std::uniform_real_distribution<double> pos(-100.0, 100.0), radius(5.0, 60.0), angle(-kPi, kPi),

@@ -22,6 +22,11 @@ void add_tracker_options(CLI::App* command, TrackerOptions* options, std::string
                    "closest to the previous boundary wins (0: the paper's rule)")
       ->capture_default_str();
   command
+      ->add_option("--similarity-exponent", options->similarity_exponent,
+                   "Candidates are ranked by cost / similarity^k: a change of area costs "
+                   "something, so that a cycle does not creep outward (0: the paper's rule)")
+      ->capture_default_str();
+  command
       ->add_option("--recover-by-motion", options->recover_by_motion,
                    "When lost, search again where image motion moved the boundary (true/false)")
       ->capture_default_str();

@@ -34,11 +34,11 @@ double boundary_distance(const Polygon& a, const Polygon& b) {
 std::optional<BoundaryChoice> choose_boundary_stable(const std::vector<CycleCandidate>& candidates,
                                                      const SegmentGraph& graph,
                                                      const Polygon& previous, double min_similarity,
-                                                     double tolerance) {
+                                                     double tolerance, double similarity_exponent) {
   StableChooser chooser;
   return chooser.choose(
       candidates, [&](int index, std::vector<int>* cycle) { *cycle = candidates[index].vertices; },
-      graph, previous, min_similarity, tolerance);
+      graph, previous, min_similarity, tolerance, nullptr, 0.0, similarity_exponent);
 }
 
 }  // namespace scbt

@@ -20,10 +20,11 @@ double boundary_distance(const Polygon& a, const Polygon& b);
 // least one, the one closest to the previous boundary (boundary_distance). Near-ties in
 // saliency are common (inner and outer rim of a cup, a spike through a stray segment); picking
 // the one that moved least keeps the boundary from ratcheting outwards. tolerance 0 is the
-// paper's rule.
+// paper's rule. `similarity_exponent`: as StableChooser's.
 std::optional<BoundaryChoice> choose_boundary_stable(const std::vector<CycleCandidate>& candidates,
                                                      const SegmentGraph& graph,
                                                      const Polygon& previous, double min_similarity,
-                                                     double tolerance);
+                                                     double tolerance,
+                                                     double similarity_exponent = 0.0);
 
 }  // namespace scbt

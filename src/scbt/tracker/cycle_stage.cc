@@ -6,10 +6,11 @@ std::optional<BoundaryChoice> CycleStage::choose(StableChooser* chooser, const S
                                                  const Polygon& previous, double min_similarity,
                                                  double tolerance,
                                                  const KnownSegmentDistances* known,
-                                                 double gate_area) const {
+                                                 double gate_area,
+                                                 double similarity_exponent) const {
   return chooser->choose(
       summaries(), [this](int index, std::vector<int>* cycle) { vertices(index, cycle); }, graph,
-      previous, min_similarity, tolerance, known, gate_area);
+      previous, min_similarity, tolerance, known, gate_area, similarity_exponent);
 }
 
 Polygon CycleStage::polygon(const SegmentGraph& graph, int index) const {

@@ -158,8 +158,11 @@ void Tracker::attempt(const cv::Mat& frame, const Polygon& prior, Attempt* a, do
   // them for the kept segments (unless the cap reordered them).
   KnownSegmentDistances known{&a->kept, &a->kept_distances};
   const KnownSegmentDistances* known_if_any = a->num_dropped == 0 ? &known : nullptr;
+  // Not while lost: an object found again may be nearer or farther than when it was lost.
+  const double similarity_exponent =
+      monitor_.state() != TrackState::kLost ? options_.similarity_exponent : 0.0;
   a->choice = a->cycles->choose(&chooser_, a->graph, prior, min_similarity, options_.cost_tolerance,
-                                known_if_any, gate_area);
+                                known_if_any, gate_area, similarity_exponent);
   a->stages.choice_ms = lap();
   a->grouping_ms =
       a->stages.filter_ms + a->stages.graph_ms + a->stages.search_ms + a->stages.choice_ms;

@@ -20,6 +20,10 @@ void TrackerOptions::check() const {
     throw std::invalid_argument("min_area_similarity must be in [0, 1), got " +
                                 std::to_string(min_area_similarity));
   }
+  if (!(similarity_exponent >= 0.0 && similarity_exponent <= 10.0)) {
+    throw std::invalid_argument("similarity_exponent must be in [0, 10], got " +
+                                std::to_string(similarity_exponent));
+  }
   if (!(cost_tolerance >= 0.0 && cost_tolerance <= 10.0)) {
     throw std::invalid_argument("cost_tolerance must be in [0, 10], got " +
                                 std::to_string(cost_tolerance));

@@ -22,6 +22,11 @@ struct TrackerOptions {
   // the previous boundary wins (choose_boundary_stable). 0 is the paper's rule. 0.1 stops the
   // outward ratchet (inner -> outer rim -> table edges) that Γ alone allows.
   double cost_tolerance = 0.1;
+  // Candidates are ranked by Γ / S^k, S their area similarity to the previous boundary (Eq. 2),
+  // k this exponent (StableChooser); 0 is the paper's rule. Γ alone favours a larger cycle for
+  // its area, and a cycle creeping outward inside the gate (a rim blurred, compressed or seen at
+  // a low frame rate taking in some of the background) wins frame after frame. Not while lost.
+  double similarity_exponent = 0.5;
   // When no candidate qualifies, estimate the image motion around the boundary since it was last
   // tracked (phase correlation) and search again where it moved, instead of holding it in place.
   bool recover_by_motion = true;
