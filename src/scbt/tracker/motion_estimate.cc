@@ -21,6 +21,16 @@ void to_float(const cv::Mat& image, int factor, cv::Mat* averaged, cv::Mat* out)
 
 }  // namespace
 
+const cv::Mat& TranslationEstimator::window(cv::Size size) {
+  for (const cv::Mat& w : windows_) {
+    if (w.size() == size) return w;
+  }
+  cv::Mat& made = windows_[older_window_];
+  older_window_ = 1 - older_window_;
+  cv::createHanningWindow(made, size, CV_32F);
+  return made;
+}
+
 std::optional<TranslationEstimate> TranslationEstimator::estimate(const cv::Mat& reference,
                                                                   const cv::Mat& current,
                                                                   int max_side) {
@@ -36,12 +46,9 @@ std::optional<TranslationEstimate> TranslationEstimator::estimate(const cv::Mat&
   }
   to_float(reference, factor, &averaged_, &reference_float_);
   to_float(current, factor, &averaged_, &current_float_);
-  if (window_.size() != reference_float_.size()) {
-    cv::createHanningWindow(window_, reference_float_.size(), CV_32F);
-  }
   TranslationEstimate estimate;
-  const cv::Point2d shift =
-      cv::phaseCorrelate(reference_float_, current_float_, window_, &estimate.response);
+  const cv::Point2d shift = cv::phaseCorrelate(reference_float_, current_float_,
+                                               window(reference_float_.size()), &estimate.response);
   estimate.shift = Point(shift.x * factor, shift.y * factor);
   return estimate;
 }

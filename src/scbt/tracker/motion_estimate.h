@@ -19,15 +19,21 @@ struct TranslationEstimate {
 // (the shift is scaled back: about as many px of precision as the factor). std::nullopt when the
 // images are too small or differ in size. The default keeps a 380x290 window to ~1.2 ms (one core)
 // instead of ~5 ms, with about a pixel of precision, well inside the search band searched around
-// it. The estimator keeps its buffers and its window from call to call (a tracker measures every
-// few frames, mostly at one size).
+// it. The estimator keeps its buffers and its Hann windows from call to call (a tracker measures
+// every few frames, a coarse estimate and then a full one, each mostly at one size).
 class TranslationEstimator {
  public:
   std::optional<TranslationEstimate> estimate(const cv::Mat& reference, const cv::Mat& current,
                                               int max_side = 200);
 
  private:
-  cv::Mat averaged_, reference_float_, current_float_, window_;
+  // The Hann window of `size`: one of the last two sizes asked for, or made in place of the
+  // older of them.
+  const cv::Mat& window(cv::Size size);
+
+  cv::Mat averaged_, reference_float_, current_float_;
+  cv::Mat windows_[2];
+  int older_window_ = 0;
 };
 
 // One estimate with buffers of its own (TranslationEstimator::estimate).
