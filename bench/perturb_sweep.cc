@@ -135,6 +135,7 @@ int main(int argc, char** argv) {
   app.add_option("--min-motion-agreement", options.min_motion_agreement);
   app.add_option("--adaptive-thresholds", options.adaptive_thresholds.enabled);
   app.add_option("--normalize-exposure", options.exposure.normalize);
+  app.add_option("--adapt-to-blur", options.blur.adapt);
   app.add_option("--full-contrast", options.exposure.full_contrast);
   app.add_option("--retry-weak-frames", options.adaptive_thresholds.retry_weak_frames);
   app.add_option("--keep-retry-winner", options.adaptive_thresholds.keep_retry_winner);

@@ -118,7 +118,7 @@ class Tracker:
     min_line_length=-1.0 (automatic), line_fit_error=1.0, crop_to_boundary=True,
     roi_padding=8.0, filter_distance=20.0, min_area_similarity=0.9, cost_tolerance=0.1,
     similarity_exponent=0.5, max_segments=1500, seed_stride=2, loss_handling=True,
-    normalize_exposure=True, predict_motion=True, keep_debug=False.
+    normalize_exposure=True, adapt_to_blur=True, predict_motion=True, keep_debug=False.
     Raises ValueError naming a bad value, TypeError for an unknown option.
     """
 
@@ -142,6 +142,7 @@ class Tracker:
         seed_stride: int = ...,
         loss_handling: bool = ...,
         normalize_exposure: bool = ...,
+        adapt_to_blur: bool = ...,
         predict_motion: bool = ...,
         keep_debug: bool = ...,
     ) -> None: ...

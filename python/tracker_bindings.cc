@@ -68,6 +68,8 @@ TrackerOptions tracker_options_from_kwargs(const py::kwargs& kwargs, bool* keep_
         options.loss.enabled = value.cast<bool>();
       } else if (key == "normalize_exposure") {
         options.exposure.normalize = value.cast<bool>();
+      } else if (key == "adapt_to_blur") {
+        options.blur.adapt = value.cast<bool>();
       } else if (key == "predict_motion") {
         options.predict_motion = value.cast<bool>();
       } else if (key == "keep_debug") {
@@ -101,6 +103,7 @@ py::dict options_to_dict(const TrackerOptions& o, bool keep_debug) {
   d["seed_stride"] = o.bdsp.seed_stride;
   d["loss_handling"] = o.loss.enabled;
   d["normalize_exposure"] = o.exposure.normalize;
+  d["adapt_to_blur"] = o.blur.adapt;
   d["predict_motion"] = o.predict_motion;
   d["keep_debug"] = keep_debug;
   return d;
@@ -288,8 +291,8 @@ void register_tracker(py::module_& m) {
       "  crop_to_boundary=True, roi_padding=8.0, filter_distance=20.0,\n"
       "  min_area_similarity=0.9, cost_tolerance=0.1, similarity_exponent=0.5,\n"
       "  max_segments=1500,\n"
-      "  seed_stride=2, loss_handling=True, normalize_exposure=True, predict_motion=True,\n"
-      "  keep_debug=False.\n"
+      "  seed_stride=2, loss_handling=True, normalize_exposure=True, adapt_to_blur=True,\n"
+      "  predict_motion=True, keep_debug=False.\n"
       "Raises ValueError naming a bad value, TypeError for an unknown option.")
       .def(py::init<const py::kwargs&>())
       .def("init", &PyTracker::init, py::arg("frame"), py::arg("polygon"),

@@ -26,3 +26,8 @@ def test_box_in_a_dim_frame_finds_the_outline_only_with_scaled_thresholds():
     assert np.abs(found.mean(axis=0) - truth.mean(axis=0)).max() < 2.0
     with pytest.raises(RuntimeError):
         scbt.Tracker(normalize_exposure=False).init_from_box(frame, box)
+
+
+def test_adapt_to_blur_is_on_by_default_and_can_be_switched_off():
+    assert scbt.Tracker().options["adapt_to_blur"] is True
+    assert scbt.Tracker(adapt_to_blur=False).options["adapt_to_blur"] is False

@@ -132,7 +132,7 @@ std::optional<std::vector<double>> read_numbers(const ros::NodeHandle& node,
 const std::vector<std::string>& known_parameters() {
   static const std::vector<std::string> names = {
       "detector", "filter_distance", "min_area_similarity", "cost_tolerance", "similarity_exponent",
-      "recover_by_motion", "seed_stride", "gradient_threshold", "anchor_threshold",
+      "recover_by_motion", "adapt_to_blur", "seed_stride", "gradient_threshold", "anchor_threshold",
       "min_line_length", "max_segments", "use_depth", "sync_queue_size", "init_polygon", "init_box",
       // Read by image_transport: which transport (raw, compressed, ...) to subscribe with.
       "image_transport"};
@@ -173,6 +173,7 @@ NodeOptions read_node_options(const ros::NodeHandle& node) {
   read_double(node, "cost_tolerance", &t.cost_tolerance);
   read_double(node, "similarity_exponent", &t.similarity_exponent);
   read_bool(node, "recover_by_motion", &t.recover_by_motion);
+  read_bool(node, "adapt_to_blur", &t.blur.adapt);
   read_int(node, "seed_stride", &t.bdsp.seed_stride);
   read_int(node, "gradient_threshold", &t.detector.gradient_threshold);
   read_int(node, "anchor_threshold", &t.detector.anchor_threshold);

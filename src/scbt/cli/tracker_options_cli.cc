@@ -74,6 +74,12 @@ void add_tracker_options(CLI::App* command, TrackerOptions* options, std::string
                    "half the 8-bit range (dim or low-contrast camera) (true/false)")
       ->capture_default_str();
   command
+      ->add_option("--adapt-to-blur", options->blur.adapt,
+                   "Scale the EDLines thresholds down by the edge spread measured across the "
+                   "tracked boundary when it is beyond a focused camera's (defocus, smoothing, "
+                   "motion blur) (true/false)")
+      ->capture_default_str();
+  command
       ->add_option("--min-line-length", options->detector.min_line_length,
                    "Shortest segment kept (px); <= 0: EDLines' own choice")
       ->capture_default_str();

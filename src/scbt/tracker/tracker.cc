@@ -47,6 +47,7 @@ Tracker::Tracker(const TrackerOptions& options,
   detector_ = make_line_detector(options_.detector);
   gradient_threshold_ = options_.detector.gradient_threshold;
   anchor_threshold_ = options_.detector.anchor_threshold;
+  step_threshold_ = gradient_threshold_;
   for (Attempt& a : attempts_) a.cycles = make_cycle_stage();
 }
 
@@ -63,17 +64,43 @@ void Tracker::scale_thresholds_to_exposure(const cv::Mat& frame) {
     gradient_threshold_ = threshold_for_exposure(gradient_threshold_, gain);
     anchor_threshold_ = threshold_for_exposure(anchor_threshold_, gain);
   }
+  step_threshold_ = gradient_threshold_;
+  if (options_.blur.adapt && detector_->adapts_thresholds() && edge_blur_gain_ < 1.0) {
+    gradient_threshold_ =
+        std::max(1, static_cast<int>(std::lround(gradient_threshold_ * edge_blur_gain_)));
+    anchor_threshold_ =
+        std::max(1, static_cast<int>(std::lround(anchor_threshold_ * edge_blur_gain_)));
+  }
   detector_->set_edge_thresholds(gradient_threshold_, anchor_threshold_);
+}
+
+void Tracker::measure_edge_blur(const cv::Mat& gray, cv::Point window_tl) {
+  if (!options_.blur.adapt) return;
+  // A clear step: twice the smallest one the detector sees (a Sobel response of the threshold is
+  // a step of about a quarter of it).
+  const double sigma =
+      estimate_edge_blur(gray, window_tl, boundary_, step_threshold_ / 2.0, options_.blur);
+  if (!(sigma > 0.0)) return;
+  // A camera's blur changes over frames; one frame's estimate is noisy.
+  edge_blur_sigma_ = edge_blur_sigma_ > 0.0 ? edge_blur_sigma_ + options_.blur.update_weight *
+                                                                     (sigma - edge_blur_sigma_)
+                                            : sigma;
+  edge_blur_gain_ =
+      edge_blur_gain(edge_blur_sigma_, std::max(options_.detector.sigma, 0.5), options_.blur);
 }
 
 void Tracker::init(const cv::Mat& frame, const Polygon& polygon) {
   check_tracker_init(frame, polygon, &gray_);
-  scale_thresholds_to_exposure(frame);
   boundary_ = polygon;
   boundary_area_ = area(polygon);
   reference_roi_ = cv::Rect(cv::Point(0, 0), frame.size());
   to_gray(frame, &reference_gray_);
   reference_gray_ = reference_gray_.clone();
+  edge_blur_gain_ = 1.0;
+  edge_blur_sigma_ = -1.0;
+  scale_thresholds_to_exposure(frame);  // the exposure's scaling is what the blur estimate needs
+  measure_edge_blur(reference_gray_, cv::Point(0, 0));
+  scale_thresholds_to_exposure(frame);
   frame_size_ = frame.size();
   motion_.reset();
   motion_.update(boundary_);
@@ -401,6 +428,10 @@ TrackResult Tracker::track(const cv::Mat& frame) {
     boundary_area_ = a->cycles->area(a->choice->index);
     result.cost = a->choice->cost;
     result.area_similarity = a->choice->similarity;
+    // Before the motion reference takes the grey window (the chosen attempt's).
+    if (result.confidence >= options_.loss.tracking_confidence && gray_roi_ == a->roi) {
+      measure_edge_blur(gray_, a->roi.tl());
+    }
     remember_reference(frame, *a);
     motion_.update(boundary_);
     if (options_.predict_motion && options_.confirm_motion) appearance_.remember(frame, boundary_);

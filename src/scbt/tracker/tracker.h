@@ -158,6 +158,14 @@ class Tracker {
   void scale_thresholds_to_exposure(const cv::Mat& frame);
   int gradient_threshold_;
   int anchor_threshold_;
+  // The gradient threshold scaled to the exposure only: a blurred step keeps its height, so the
+  // smallest grey step counted as an edge (the confidence's, the blur estimate's) follows this.
+  int step_threshold_;
+  // TrackerOptions::blur: the factor the thresholds are scaled by for the edge spread of the last
+  // confidently tracked boundary, measured on `gray` (the window at `window_tl`).
+  double edge_blur_gain_ = 1.0;
+  double edge_blur_sigma_ = -1.0;  // the running estimate (px); < 0: none yet
+  void measure_edge_blur(const cv::Mat& gray, cv::Point window_tl);
   // TrackerOptions::smooth_noisy_frames: `gray` smoothed into *smoothed when the camera's noise
   // (Immerkaer's estimate, refreshed every few frames) calls for it, the detector's thresholds
   // then lowered with the smoothing (*thresholds_changed set); otherwise `gray`.

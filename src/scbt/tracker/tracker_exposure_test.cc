@@ -10,15 +10,10 @@
 
 #include "scbt/synthetic/scene.h"
 #include "scbt/tracker/dim_camera_test_util.h"
-#include "scbt/tracker/hexagon_scene_test_util.h"
-#include "scbt/tracker/tracker.h"
+#include "scbt/tracker/hexagon_pan_test_util.h"
 
 namespace scbt {
 namespace {
-
-constexpr int kFrames = 20;
-const cv::Point kStart(160, 120);
-const cv::Point kStep(3, 2);  // the camera pans this far per frame
 
 // The 640x480 view at `corner`, as a dim camera gives it (dim_camera_frame).
 cv::Mat dim_view(const cv::Mat& scene, cv::Point corner, double brightness, double noise,
@@ -26,36 +21,15 @@ cv::Mat dim_view(const cv::Mat& scene, cv::Point corner, double brightness, doub
   return dim_camera_frame(scene(cv::Rect(corner, cv::Size(640, 480))), brightness, noise, rng);
 }
 
-Polygon truth_at(int k) {
-  const cv::Point corner = kStart + k * kStep;
-  return hexagon({480.0 - corner.x, 360.0 - corner.y}, 70);
-}
-
-struct PanRun {
-  double max_error = 0.0;  // px, mean_boundary_distance to the truth, worst frame
-  int held = 0;
-  std::vector<Polygon> tracked;
-};
-
 PanRun track_pan(double brightness, double noise, bool normalize, unsigned seed) {
   const cv::Mat scene = render_hexagon_scene(seed);
   TrackerOptions options;
   options.exposure.normalize = normalize;
   // Without the weak-frame retry, which lowers the thresholds on its own on a held frame.
   options.adaptive_thresholds.retry_weak_frames = false;
-  Tracker tracker(options);
   cv::RNG rng(seed);
-  tracker.init(dim_view(scene, kStart, brightness, noise, &rng), truth_at(0));
-  PanRun run;
-  for (int k = 1; k < kFrames; ++k) {
-    const TrackResult result =
-        tracker.track(dim_view(scene, kStart + k * kStep, brightness, noise, &rng));
-    run.held += result.held ? 1 : 0;
-    run.max_error =
-        std::max(run.max_error, mean_boundary_distance(result.boundary, truth_at(k), 0.5));
-    run.tracked.push_back(result.boundary);
-  }
-  return run;
+  return track_pan(
+      options, [&](cv::Point corner) { return dim_view(scene, corner, brightness, noise, &rng); });
 }
 
 TEST(TrackerExposureTest, DimViewIsFollowedWithThresholdsScaledToItsContrast) {
@@ -69,7 +43,7 @@ TEST(TrackerExposureTest, DimViewIsFollowedWithThresholdsScaledToItsContrast) {
           << "; published worst " << published.max_error << " px, held " << published.held;
     EXPECT_LT(scaled.max_error, 1.5) << where.str();
     EXPECT_EQ(scaled.held, 0) << where.str();
-    EXPECT_GT(published.held, kFrames / 2) << where.str();
+    EXPECT_GT(published.held, kPanFrames / 2) << where.str();
   }
 }
 
@@ -88,10 +62,10 @@ TEST(TrackerExposureTest, WellExposedViewIsTrackedExactlyAsWithoutScaling) {
 TEST(TrackerExposureTest, BoxInADimFrameFindsTheOutline) {
   for (unsigned seed : {1u, 2u, 3u}) {
     cv::RNG rng(seed);
-    const cv::Mat frame = dim_view(render_hexagon_scene(seed), kStart, 0.07, 0.5, &rng);
+    const cv::Mat frame = dim_view(render_hexagon_scene(seed), kPanStart, 0.07, 0.5, &rng);
     const cv::Rect box(200, 120, 240, 240);  // the hexagon at (320, 240), radius 70
     Tracker scaled;
-    EXPECT_LT(mean_boundary_distance(scaled.init_from_box(frame, box), truth_at(0)), 1.5)
+    EXPECT_LT(mean_boundary_distance(scaled.init_from_box(frame, box), pan_truth_at(0)), 1.5)
         << "seed " << seed;
     TrackerOptions published_only;
     published_only.exposure.normalize = false;

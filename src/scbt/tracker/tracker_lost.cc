@@ -49,7 +49,7 @@ BoundaryEvidence Tracker::evidence_of(const Attempt& a, const Polygon& chosen,
                                       const Polygon& previous) const {
   const double gap_length = a.choice->cost * a.cycles->area(a.choice->index);
   return measure_evidence(chosen, gap_length, previous, monitor_.reference(), gray_, a.roi.tl(),
-                          min_edge_step(gradient_threshold_));
+                          min_edge_step(step_threshold_));
 }
 
 void Tracker::check_view_cut(const cv::Mat& frame, const TrackResult& result) {

@@ -12,6 +12,7 @@ void TrackerOptions::check() const {
   exposure.check();
   loss.check();
   appearance.check();
+  blur.check();
   if (!(filter_distance > 0.0 && filter_distance <= 1000.0)) {
     throw std::invalid_argument("filter_distance must be in (0, 1000] pixels, got " +
                                 std::to_string(filter_distance));

@@ -3,6 +3,7 @@
 
 #include "scbt/cycles/bdsp.h"
 #include "scbt/lines/adaptive_thresholds.h"
+#include "scbt/lines/edge_blur.h"
 #include "scbt/lines/exposure.h"
 #include "scbt/lines/line_detector.h"
 #include "scbt/tracker/confidence.h"
@@ -58,6 +59,10 @@ struct TrackerOptions {
   // EDLines thresholds scaled down on a frame of low contrast (dim or washed out), as if its
   // grey levels were stretched to half the 8-bit range (exposure.h).
   ExposureOptions exposure;
+  // EDLines thresholds scaled down by the edge spread of the last confidently tracked boundary
+  // (edge_blur.h): a defocused, smoothed or motion-blurred camera lowers every edge's gradient,
+  // the faint edges of a plain object first.
+  EdgeBlurOptions blur;
   // A noisy camera's window is smoothed before detection as the weak-frame retry smooths it
   // (AdaptiveThresholdOptions::smooth_noise, smoothed_noise), on every frame: noise ridges
   // otherwise break the boundary into fragments that close neighbouring cycles. A window whose

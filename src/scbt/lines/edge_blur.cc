@@ -1,0 +1,125 @@
+#include "scbt/lines/edge_blur.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace scbt {
+namespace {
+
+constexpr int kReach = 7;                // px either side of the boundary
+constexpr int kLength = 2 * kReach + 1;  // profile samples
+constexpr int kFar = 4;                  // samples at either end that give the step
+// The central differences' own spread, added to sigma^2 (a 2 px box: 4 / 12).
+constexpr double kDifferenceVariance = 1.0 / 3.0;
+
+// Bilinear grey level at (x, y) of an 8-bit image; false outside it.
+bool sample(const cv::Mat& gray, double x, double y, double* value) {
+  if (!(x >= 0.0 && y >= 0.0 && x <= gray.cols - 1.0 && y <= gray.rows - 1.0)) return false;
+  const int x0 = std::min(static_cast<int>(x), gray.cols - 2);
+  const int y0 = std::min(static_cast<int>(y), gray.rows - 2);
+  const double fx = x - x0, fy = y - y0;
+  const std::uint8_t* top = gray.ptr<std::uint8_t>(y0) + x0;
+  const std::uint8_t* bottom = gray.ptr<std::uint8_t>(y0 + 1) + x0;
+  *value =
+      (1 - fy) * ((1 - fx) * top[0] + fx * top[1]) + fy * ((1 - fx) * bottom[0] + fx * bottom[1]);
+  return true;
+}
+
+// The spread of the step the profile crosses, or -1 when it crosses none clearly.
+double profile_sigma(const std::array<double, kLength>& profile, double min_step) {
+  double near = 0.0, far = 0.0;
+  for (int i = 0; i < kFar; ++i) {
+    near += profile[i];
+    far += profile[kLength - 1 - i];
+  }
+  const double step = (far - near) / kFar;
+  if (!(std::abs(step) >= min_step)) return -1.0;
+  const double sign = step > 0.0 ? 1.0 : -1.0;
+  std::array<double, kLength - 2> slope;
+  for (int i = 0; i + 2 < kLength; ++i) slope[i] = sign * (profile[i + 2] - profile[i]) / 2.0;
+  const int peak = static_cast<int>(std::max_element(slope.begin(), slope.end()) - slope.begin());
+  if (peak < 2 || peak + 2 >= static_cast<int>(slope.size()) || !(slope[peak] > 0.0)) return -1.0;
+  const double ratio = (slope[peak - 2] + slope[peak + 2]) / (2.0 * slope[peak]);
+  // Beyond these the ratio no longer resolves the spread: an edge sharper than the first is read
+  // as the first; a flat slope (no peak) is no step.
+  constexpr double kSharpest = 0.01, kFlattest = 0.99;
+  if (!(ratio < kFlattest)) return -1.0;
+  return std::sqrt(-2.0 / std::log(std::max(ratio, kSharpest)));
+}
+
+}  // namespace
+
+void EdgeBlurOptions::check() const {
+  if (!(sharp_sigma > 0.0 && sharp_sigma <= 10.0)) {
+    throw std::invalid_argument("edge blur sharp_sigma must be in (0, 10] px, got " +
+                                std::to_string(sharp_sigma));
+  }
+  if (!(min_gain > 0.0 && min_gain <= max_gain && max_gain <= 1.0)) {
+    throw std::invalid_argument("edge blur gains must satisfy 0 < min_gain <= max_gain <= 1");
+  }
+  if (!(update_weight > 0.0 && update_weight <= 1.0)) {
+    throw std::invalid_argument("edge blur update_weight must be in (0, 1], got " +
+                                std::to_string(update_weight));
+  }
+  if (samples < 1 || samples > 10000 || min_edges < 1 || min_edges > samples) {
+    throw std::invalid_argument("edge blur needs 1 <= min_edges <= samples <= 10000");
+  }
+}
+
+double estimate_edge_blur(const cv::Mat& gray, cv::Point window_tl, const Polygon& boundary,
+                          double min_step, const EdgeBlurOptions& options) {
+  const size_t n = boundary.size();
+  const double length = perimeter(boundary);
+  if (gray.empty() || gray.type() != CV_8UC1 || n < 3 || !(length > 0.0)) return -1.0;
+  std::vector<double> sigmas;
+  sigmas.reserve(static_cast<size_t>(options.samples));
+  const double spacing = length / options.samples;
+  double along = 0.5 * spacing, edge_start = 0.0;
+  std::array<double, kLength> profile;
+  for (size_t i = 0; i < n; ++i) {
+    const Point a = boundary[i] - Point(window_tl.x, window_tl.y);
+    const Point d = boundary[(i + 1) % n] - boundary[i];
+    const double edge = cv::norm(d);
+    if (edge <= 0.0) continue;
+    const Point t = d * (1.0 / edge), normal(t.y, -t.x);
+    for (; along < edge_start + edge; along += spacing) {
+      const Point p = a + t * (along - edge_start);
+      bool inside = true;
+      for (int k = 0; k < kLength && inside; ++k) {
+        double sum = 0.0;
+        for (int lane = -1; lane <= 1 && inside; ++lane) {
+          const Point q =
+              p + normal * static_cast<double>(k - kReach) + t * static_cast<double>(lane);
+          double value = 0.0;
+          inside = sample(gray, q.x, q.y, &value);
+          sum += value;
+        }
+        profile[k] = sum / 3.0;
+      }
+      if (!inside) continue;
+      const double sigma = profile_sigma(profile, min_step);
+      if (sigma > 0.0) sigmas.push_back(sigma);
+    }
+    edge_start += edge;
+  }
+  if (static_cast<int>(sigmas.size()) < options.min_edges) return -1.0;
+  const auto middle = sigmas.begin() + static_cast<std::ptrdiff_t>(sigmas.size() / 2);
+  std::nth_element(sigmas.begin(), middle, sigmas.end());
+  return *middle;
+}
+
+double edge_blur_gain(double sigma, double detector_sigma, const EdgeBlurOptions& options) {
+  if (!(sigma > 0.0)) return 1.0;
+  const double own = detector_sigma * detector_sigma;
+  const double sharp = options.sharp_sigma * options.sharp_sigma + kDifferenceVariance;
+  const double gain = std::sqrt((own + sharp) / (own + sigma * sigma));
+  if (gain > options.max_gain) return 1.0;
+  return std::max(gain, options.min_gain);
+}
+
+}  // namespace scbt

@@ -1,0 +1,61 @@
+// EdgeBlurOptions on rendered views: in a blurred, low-contrast view the hexagon's edge falls
+// below EDLines' published thresholds; scaled for the blur measured across the tracked boundary
+// they detect it again (with no weak-frame retry to help), and a sharp view is tracked exactly
+// as without the scaling.
+#include <gtest/gtest.h>
+
+#include <opencv2/imgproc.hpp>
+#include <sstream>
+
+#include "scbt/tracker/hexagon_pan_test_util.h"
+
+namespace scbt {
+namespace {
+
+// The 640x480 view at `corner` with its contrast scaled by `contrast` about mid-grey and
+// Gaussian-blurred by `blur` px (none for 0).
+cv::Mat blurred_view(const cv::Mat& scene, cv::Point corner, double contrast, double blur) {
+  cv::Mat view;
+  scene(cv::Rect(corner, cv::Size(640, 480)))
+      .convertTo(view, CV_8U, contrast, 128.0 * (1.0 - contrast));
+  if (blur > 0.0) cv::GaussianBlur(view, view, cv::Size(0, 0), blur);
+  return view;
+}
+
+PanRun track_pan(double contrast, double blur, bool adapt, unsigned seed) {
+  const cv::Mat scene = render_hexagon_scene(seed);
+  TrackerOptions options;
+  options.blur.adapt = adapt;
+  // Neither the exposure's scaling nor the weak-frame retry, which lower the thresholds on their
+  // own.
+  options.exposure.normalize = false;
+  options.adaptive_thresholds.retry_weak_frames = false;
+  return track_pan(options,
+                   [&](cv::Point corner) { return blurred_view(scene, corner, contrast, blur); });
+}
+
+TEST(TrackerBlurTest, BlurredViewIsFollowedWithThresholdsScaledToItsBlur) {
+  for (unsigned seed : {1u, 2u, 3u}) {
+    const PanRun scaled = track_pan(0.25, 3.5, true, seed);
+    const PanRun published = track_pan(0.25, 3.5, false, seed);
+    std::ostringstream where;
+    where << "seed " << seed << ": scaled worst " << scaled.max_error << " px, held " << scaled.held
+          << "; published worst " << published.max_error << " px, held " << published.held;
+    EXPECT_LT(scaled.max_error, 2.0) << where.str();
+    EXPECT_EQ(scaled.held, 0) << where.str();
+    EXPECT_GT(published.held, kPanFrames / 2) << where.str();
+  }
+}
+
+TEST(TrackerBlurTest, SharpViewIsTrackedExactlyAsWithoutScaling) {
+  const PanRun scaled = track_pan(1.0, 0.0, true, 4);
+  const PanRun published = track_pan(1.0, 0.0, false, 4);
+  ASSERT_EQ(scaled.tracked.size(), published.tracked.size());
+  for (size_t k = 0; k < scaled.tracked.size(); ++k) {
+    EXPECT_EQ(scaled.tracked[k], published.tracked[k]) << "frame " << k + 1;
+  }
+  EXPECT_LT(scaled.max_error, 1.5);
+}
+
+}  // namespace
+}  // namespace scbt
