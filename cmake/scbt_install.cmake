@@ -9,7 +9,7 @@ include(CMakePackageConfigHelpers)
 # public header including a private one fails there (scripts/ci_install.sh).
 set(SCBT_PUBLIC_HEADERS
     geometry/polygon.h geometry/polygon_io.h geometry/boundary_query.h geometry/shape_descriptor.h
-    lines/line_detector.h lines/adaptive_thresholds.h lines/exposure.h
+    lines/line_detector.h lines/adaptive_thresholds.h lines/exposure.h lines/edge_blur.h
     filter/segment_filter.h
     graph/segment_graph.h
     cycles/bdsp.h cycles/segment_units.h
