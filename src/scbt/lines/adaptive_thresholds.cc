@@ -7,23 +7,9 @@
 #include <string>
 #include <vector>
 
+#include "scbt/lines/boundary_samples.h"
+
 namespace scbt {
-namespace {
-
-// Bilinear sample of an 8-bit image (clamped to the border).
-double sample(const cv::Mat& gray, double x, double y) {
-  x = std::clamp(x, 0.0, gray.cols - 1.001);
-  y = std::clamp(y, 0.0, gray.rows - 1.001);
-  const int x0 = static_cast<int>(x), y0 = static_cast<int>(y);
-  const double fx = x - x0, fy = y - y0;
-  const std::uint8_t* r0 = gray.ptr<std::uint8_t>(y0);
-  const std::uint8_t* r1 = gray.ptr<std::uint8_t>(y0 + 1);
-  const double top = r0[x0] + fx * (r0[x0 + 1] - r0[x0]);
-  const double bottom = r1[x0] + fx * (r1[x0 + 1] - r1[x0]);
-  return top + fy * (bottom - top);
-}
-
-}  // namespace
 
 void AdaptiveThresholdOptions::check() const {
   if (!(boundary_fraction > 0.0 && boundary_fraction <= 1.0)) {
@@ -88,46 +74,30 @@ double estimate_noise_sigma(const cv::Mat& gray, int row_step) {
 
 double boundary_edge_strength(const cv::Mat& gray, cv::Point offset, const Polygon& boundary,
                               int samples, double reach) {
-  const size_t n = boundary.size();
-  if (n < 2 || gray.rows < 3 || gray.cols < 3 || samples < 1) return 0.0;
-  const double length = perimeter(boundary);
-  if (!(length > 0.0)) return 0.0;
+  if (boundary.size() < 2 || gray.rows < 3 || gray.cols < 3 || samples < 1) return 0.0;
   std::vector<double> strengths;
   strengths.reserve(samples);
-  const double step = length / samples;
-  double along = 0.5 * step;  // arc length of the next sample
-  double edge_start = 0.0;
   const int reach_px = static_cast<int>(std::ceil(reach));
   std::vector<double> across(2 * reach_px + 3);
-  for (size_t i = 0; i < n && static_cast<int>(strengths.size()) < samples; ++i) {
-    const Point a = boundary[i] - Point(offset.x, offset.y);
-    const Point b = boundary[(i + 1) % n] - Point(offset.x, offset.y);
-    const double edge = cv::norm(b - a);
-    if (edge <= 0.0) continue;
-    const Point t = (b - a) * (1.0 / edge);
-    const Point normal(-t.y, t.x);
-    for (; along < edge_start + edge; along += step) {
-      const Point p = a + t * (along - edge_start);
-      if (p.x < 1 || p.y < 1 || p.x > gray.cols - 2 || p.y > gray.rows - 2) continue;
-      // The steepest slope across the boundary, each difference averaged over three points
-      // along it to damp noise: the grey levels across it (summed along it) are read once, and
-      // the slope at k is the difference of those at k + 1 and k - 1.
-      for (int m = -reach_px - 1; m <= reach_px + 1; ++m) {
-        double sum = 0.0;
-        for (int j = -1; j <= 1; ++j) {
-          const Point q = p + normal * m + t * j;
-          sum += sample(gray, q.x, q.y);
-        }
-        across[m + reach_px + 1] = sum;
+  for_each_boundary_sample(boundary, offset, samples, [&](Point p, Point t, Point normal) {
+    if (p.x < 1 || p.y < 1 || p.x > gray.cols - 2 || p.y > gray.rows - 2) return;
+    // The steepest slope across the boundary, each difference averaged over three points
+    // along it to damp noise: the grey levels across it (summed along it) are read once, and
+    // the slope at k is the difference of those at k + 1 and k - 1.
+    for (int m = -reach_px - 1; m <= reach_px + 1; ++m) {
+      double sum = 0.0;
+      for (int j = -1; j <= 1; ++j) {
+        const Point q = p + normal * m + t * j;
+        sum += bilinear_grey(gray, q.x, q.y);
       }
-      double best = 0.0;
-      for (int k = 1; k <= 2 * reach_px + 1; ++k) {
-        best = std::max(best, std::abs(across[k + 1] - across[k - 1]) / 6.0);
-      }
-      strengths.push_back(8.0 * best);
+      across[m + reach_px + 1] = sum;
     }
-    edge_start += edge;
-  }
+    double best = 0.0;
+    for (int k = 1; k <= 2 * reach_px + 1; ++k) {
+      best = std::max(best, std::abs(across[k + 1] - across[k - 1]) / 6.0);
+    }
+    strengths.push_back(8.0 * best);
+  });
   if (strengths.empty()) return 0.0;
   std::nth_element(strengths.begin(), strengths.begin() + strengths.size() / 2, strengths.end());
   return strengths[strengths.size() / 2];

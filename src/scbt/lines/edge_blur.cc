@@ -3,10 +3,11 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <cstdint>
 #include <stdexcept>
 #include <string>
 #include <vector>
+
+#include "scbt/lines/boundary_samples.h"
 
 namespace scbt {
 namespace {
@@ -17,17 +18,9 @@ constexpr int kFar = 4;                  // samples at either end that give the 
 // The central differences' own spread, added to sigma^2 (a 2 px box: 4 / 12).
 constexpr double kDifferenceVariance = 1.0 / 3.0;
 
-// Bilinear grey level at (x, y) of an 8-bit image; false outside it.
-bool sample(const cv::Mat& gray, double x, double y, double* value) {
-  if (!(x >= 0.0 && y >= 0.0 && x <= gray.cols - 1.0 && y <= gray.rows - 1.0)) return false;
-  const int x0 = std::min(static_cast<int>(x), gray.cols - 2);
-  const int y0 = std::min(static_cast<int>(y), gray.rows - 2);
-  const double fx = x - x0, fy = y - y0;
-  const std::uint8_t* top = gray.ptr<std::uint8_t>(y0) + x0;
-  const std::uint8_t* bottom = gray.ptr<std::uint8_t>(y0 + 1) + x0;
-  *value =
-      (1 - fy) * ((1 - fx) * top[0] + fx * top[1]) + fy * ((1 - fx) * bottom[0] + fx * bottom[1]);
-  return true;
+// Whether (x, y) lies inside the image, where a bilinear sample needs no clamping.
+bool inside(const cv::Mat& gray, const Point& q) {
+  return q.x >= 0.0 && q.y >= 0.0 && q.x <= gray.cols - 1.0 && q.y <= gray.rows - 1.0;
 }
 
 // The spread of the step the profile crosses, or -1 when it crosses none clearly.
@@ -73,40 +66,29 @@ void EdgeBlurOptions::check() const {
 
 double estimate_edge_blur(const cv::Mat& gray, cv::Point window_tl, const Polygon& boundary,
                           double min_step, const EdgeBlurOptions& options) {
-  const size_t n = boundary.size();
-  const double length = perimeter(boundary);
-  if (gray.empty() || gray.type() != CV_8UC1 || n < 3 || !(length > 0.0)) return -1.0;
+  if (gray.empty() || gray.type() != CV_8UC1 || gray.rows < 2 || gray.cols < 2 ||
+      boundary.size() < 3) {
+    return -1.0;
+  }
   std::vector<double> sigmas;
   sigmas.reserve(static_cast<size_t>(options.samples));
-  const double spacing = length / options.samples;
-  double along = 0.5 * spacing, edge_start = 0.0;
   std::array<double, kLength> profile;
-  for (size_t i = 0; i < n; ++i) {
-    const Point a = boundary[i] - Point(window_tl.x, window_tl.y);
-    const Point d = boundary[(i + 1) % n] - boundary[i];
-    const double edge = cv::norm(d);
-    if (edge <= 0.0) continue;
-    const Point t = d * (1.0 / edge), normal(t.y, -t.x);
-    for (; along < edge_start + edge; along += spacing) {
-      const Point p = a + t * (along - edge_start);
-      bool inside = true;
-      for (int k = 0; k < kLength && inside; ++k) {
-        double sum = 0.0;
-        for (int lane = -1; lane <= 1 && inside; ++lane) {
-          const Point q =
-              p + normal * static_cast<double>(k - kReach) + t * static_cast<double>(lane);
-          double value = 0.0;
-          inside = sample(gray, q.x, q.y, &value);
-          sum += value;
+  for_each_boundary_sample(
+      boundary, window_tl, options.samples, [&](Point p, Point t, Point normal) {
+        // profile[k] is kReach - k px along the normal; the step's sign does not matter.
+        for (int k = 0; k < kLength; ++k) {
+          double sum = 0.0;
+          for (int lane = -1; lane <= 1; ++lane) {
+            const Point q =
+                p + normal * static_cast<double>(kReach - k) + t * static_cast<double>(lane);
+            if (!inside(gray, q)) return;
+            sum += bilinear_grey(gray, q.x, q.y);
+          }
+          profile[k] = sum / 3.0;
         }
-        profile[k] = sum / 3.0;
-      }
-      if (!inside) continue;
-      const double sigma = profile_sigma(profile, min_step);
-      if (sigma > 0.0) sigmas.push_back(sigma);
-    }
-    edge_start += edge;
-  }
+        const double sigma = profile_sigma(profile, min_step);
+        if (sigma > 0.0) sigmas.push_back(sigma);
+      });
   if (static_cast<int>(sigmas.size()) < options.min_edges) return -1.0;
   const auto middle = sigmas.begin() + static_cast<std::ptrdiff_t>(sigmas.size() / 2);
   std::nth_element(sigmas.begin(), middle, sigmas.end());

@@ -23,6 +23,11 @@ double elapsed_ms(Clock::time_point since) {
   return std::chrono::duration<double, std::milli>(Clock::now() - since).count();
 }
 
+// The detector's own smoothing (px), as far as a step edge's gradient is concerned.
+double own_smoothing(const TrackerOptions& options) {
+  return std::max(options.detector.sigma, 0.5);
+}
+
 }  // namespace
 
 void Tracker::add_retry_times(const Attempt& retry, TrackResult* result) {
@@ -65,11 +70,11 @@ void Tracker::scale_thresholds_to_exposure(const cv::Mat& frame) {
     anchor_threshold_ = threshold_for_exposure(anchor_threshold_, gain);
   }
   step_threshold_ = gradient_threshold_;
-  if (options_.blur.adapt && detector_->adapts_thresholds() && edge_blur_gain_ < 1.0) {
+  const double blur_gain = edge_blur_gain(edge_blur_sigma_, own_smoothing(options_), options_.blur);
+  if (options_.blur.adapt && detector_->adapts_thresholds() && blur_gain < 1.0) {
     gradient_threshold_ =
-        std::max(1, static_cast<int>(std::lround(gradient_threshold_ * edge_blur_gain_)));
-    anchor_threshold_ =
-        std::max(1, static_cast<int>(std::lround(anchor_threshold_ * edge_blur_gain_)));
+        std::max(1, static_cast<int>(std::lround(gradient_threshold_ * blur_gain)));
+    anchor_threshold_ = std::max(1, static_cast<int>(std::lround(anchor_threshold_ * blur_gain)));
   }
   detector_->set_edge_thresholds(gradient_threshold_, anchor_threshold_);
 }
@@ -85,8 +90,6 @@ void Tracker::measure_edge_blur(const cv::Mat& gray, cv::Point window_tl) {
   edge_blur_sigma_ = edge_blur_sigma_ > 0.0 ? edge_blur_sigma_ + options_.blur.update_weight *
                                                                      (sigma - edge_blur_sigma_)
                                             : sigma;
-  edge_blur_gain_ =
-      edge_blur_gain(edge_blur_sigma_, std::max(options_.detector.sigma, 0.5), options_.blur);
 }
 
 void Tracker::init(const cv::Mat& frame, const Polygon& polygon) {
@@ -96,7 +99,6 @@ void Tracker::init(const cv::Mat& frame, const Polygon& polygon) {
   reference_roi_ = cv::Rect(cv::Point(0, 0), frame.size());
   to_gray(frame, &reference_gray_);
   reference_gray_ = reference_gray_.clone();
-  edge_blur_gain_ = 1.0;
   edge_blur_sigma_ = -1.0;
   scale_thresholds_to_exposure(frame);  // the exposure's scaling is what the blur estimate needs
   measure_edge_blur(reference_gray_, cv::Point(0, 0));
@@ -208,7 +210,7 @@ const cv::Mat& Tracker::smooth_if_noisy(const cv::Mat& gray, cv::Mat* smoothed,
   cv::GaussianBlur(gray, *smoothed, cv::Size(0, 0), sigma);
   // A step edge's steepest gradient falls with the total smoothing, noise's much faster: the
   // thresholds fall with the step's, so that an edge the published ones find is still found.
-  const double own = std::max(options_.detector.sigma, 0.5);
+  const double own = own_smoothing(options_);
   const double step_gain = own / std::sqrt(own * own + sigma * sigma);
   detector_->set_edge_thresholds(
       std::max(1, static_cast<int>(std::lround(gradient_threshold_ * step_gain))),

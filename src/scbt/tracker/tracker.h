@@ -161,10 +161,10 @@ class Tracker {
   // The gradient threshold scaled to the exposure only: a blurred step keeps its height, so the
   // smallest grey step counted as an edge (the confidence's, the blur estimate's) follows this.
   int step_threshold_;
-  // TrackerOptions::blur: the factor the thresholds are scaled by for the edge spread of the last
-  // confidently tracked boundary, measured on `gray` (the window at `window_tl`).
-  double edge_blur_gain_ = 1.0;
-  double edge_blur_sigma_ = -1.0;  // the running estimate (px); < 0: none yet
+  // TrackerOptions::blur: the running estimate of the edge spread (px) of the confidently tracked
+  // boundaries (< 0: none yet), which scales the thresholds (edge_blur_gain), and its update from
+  // `gray` (the window at `window_tl`).
+  double edge_blur_sigma_ = -1.0;
   void measure_edge_blur(const cv::Mat& gray, cv::Point window_tl);
   // TrackerOptions::smooth_noisy_frames: `gray` smoothed into *smoothed when the camera's noise
   // (Immerkaer's estimate, refreshed every few frames) calls for it, the detector's thresholds
