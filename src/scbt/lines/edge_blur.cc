@@ -104,4 +104,17 @@ double edge_blur_gain(double sigma, double detector_sigma, const EdgeBlurOptions
   return std::max(gain, options.min_gain);
 }
 
+double edge_blur_anchor_gain(double sigma, double detector_sigma, const EdgeBlurOptions& options) {
+  const double gain = edge_blur_gain(sigma, detector_sigma, options);
+  if (gain >= 1.0) return 1.0;
+  // The gradient across a step spread by s^2 (all spreads added) is a Gaussian of that variance:
+  // its peak exceeds the neighbours 1 px away by a share 1 - exp(-1 / (2 s^2)) of itself.
+  const double sharp = detector_sigma * detector_sigma + options.sharp_sigma * options.sharp_sigma +
+                       kDifferenceVariance;
+  const double spread = sharp / (gain * gain);  // as edge_blur_gain saw it, within its limits
+  const double share = 1.0 - std::exp(-1.0 / (2.0 * spread));
+  const double sharp_share = 1.0 - std::exp(-1.0 / (2.0 * sharp));
+  return gain * share / sharp_share;
+}
+
 }  // namespace scbt

@@ -53,4 +53,9 @@ double estimate_edge_blur(const cv::Mat& gray, cv::Point window_tl, const Polygo
 // a gain above options.max_gain, at least options.min_gain.
 double edge_blur_gain(double sigma, double detector_sigma, const EdgeBlurOptions& options);
 
+// The same for EDLines' anchor test, a pixel's gradient above its neighbours' across the edge: a
+// spread edge's gradient is both lower and flatter, so this falls about as the cube of
+// edge_blur_gain (1 where that is 1).
+double edge_blur_anchor_gain(double sigma, double detector_sigma, const EdgeBlurOptions& options);
+
 }  // namespace scbt

@@ -74,7 +74,9 @@ void Tracker::scale_thresholds_to_exposure(const cv::Mat& frame) {
   if (options_.blur.adapt && detector_->adapts_thresholds() && blur_gain < 1.0) {
     gradient_threshold_ =
         std::max(1, static_cast<int>(std::lround(gradient_threshold_ * blur_gain)));
-    anchor_threshold_ = std::max(1, static_cast<int>(std::lround(anchor_threshold_ * blur_gain)));
+    const double anchor_gain =
+        edge_blur_anchor_gain(edge_blur_sigma_, own_smoothing(options_), options_.blur);
+    anchor_threshold_ = std::max(1, static_cast<int>(std::lround(anchor_threshold_ * anchor_gain)));
   }
   detector_->set_edge_thresholds(gradient_threshold_, anchor_threshold_);
 }
