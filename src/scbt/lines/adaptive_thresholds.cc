@@ -122,13 +122,13 @@ EdgeThresholds adapt_edge_thresholds(const cv::Mat& gray, cv::Point offset, cons
 
 const cv::Mat& adapt_to_frame(const cv::Mat& gray, cv::Point offset, const Polygon& boundary,
                               int gradient, int anchor, const AdaptiveThresholdOptions& options,
-                              cv::Mat* smoothed, EdgeThresholds* thresholds) {
+                              cv::Mat* smoothed, EdgeThresholds* thresholds, double noise_sigma) {
   EdgeThresholds& t = *thresholds;
   t = EdgeThresholds();
   t.gradient = gradient;
   t.anchor = anchor;
   if (!options.enabled) return gray;
-  t.noise_sigma = estimate_noise_sigma(gray);
+  t.noise_sigma = noise_sigma >= 0.0 ? noise_sigma : estimate_noise_sigma(gray);
   const cv::Mat* image = &gray;
   const double smoothing = smoothing_for_noise(t.noise_sigma, options);
   if (options.smooth_noise && smoothed != nullptr && smoothing > 0.0) {

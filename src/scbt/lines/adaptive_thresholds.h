@@ -69,10 +69,12 @@ EdgeThresholds adapt_edge_thresholds(const cv::Mat& gray, cv::Point offset, cons
                                      const AdaptiveThresholdOptions& options);
 
 // The same, first smoothing `gray` into *smoothed when options.smooth_noise and the noise call
-// for it. Returns the image to detect on: *smoothed, or gray.
+// for it. Returns the image to detect on: *smoothed, or gray. `noise_sigma`: the camera's noise
+// when already known (grey levels); < 0: estimated on `gray`.
 const cv::Mat& adapt_to_frame(const cv::Mat& gray, cv::Point offset, const Polygon& boundary,
                               int gradient, int anchor, const AdaptiveThresholdOptions& options,
-                              cv::Mat* smoothed, EdgeThresholds* thresholds);
+                              cv::Mat* smoothed, EdgeThresholds* thresholds,
+                              double noise_sigma = -1.0);
 
 // The sigma (px) of the Gaussian applied before detection for noise of `noise_sigma` grey levels
 // (AdaptiveThresholdOptions::smooth_noise; 0: none needed).

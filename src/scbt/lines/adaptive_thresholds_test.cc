@@ -102,6 +102,24 @@ TEST(AdaptiveThresholds, SmoothsANoisyWindowOnly) {
   EXPECT_THROW(options.check(), std::invalid_argument);
 }
 
+TEST(AdaptiveThresholds, TakesANoiseAlreadyMeasured) {
+  AdaptiveThresholdOptions options;
+  options.enabled = true;
+  options.smooth_noise = false;
+  const cv::Mat noisy = scene(24, 2, 6);
+  EdgeThresholds estimated, given, louder;
+  adapt_to_frame(noisy, {0, 0}, kSquare, 36, 8, options, nullptr, &estimated);
+  adapt_to_frame(noisy, {0, 0}, kSquare, 36, 8, options, nullptr, &given, estimated.noise_sigma);
+  EXPECT_EQ(given.noise_sigma, estimated.noise_sigma);
+  EXPECT_EQ(given.gradient, estimated.gradient);
+  EXPECT_EQ(given.anchor, estimated.anchor);
+  // A louder camera than this window shows raises the noise floor the thresholds stop at.
+  adapt_to_frame(noisy, {0, 0}, kSquare, 36, 8, options, nullptr, &louder,
+                 3.0 * estimated.noise_sigma);
+  EXPECT_EQ(louder.noise_sigma, 3.0 * estimated.noise_sigma);
+  EXPECT_GT(louder.gradient, estimated.gradient);
+}
+
 TEST(AdaptiveThresholds, RejectsBadOptions) {
   AdaptiveThresholdOptions o;
   o.boundary_fraction = 0;

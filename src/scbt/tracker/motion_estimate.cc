@@ -1,25 +1,36 @@
 #include "scbt/tracker/motion_estimate.h"
 
 #include <algorithm>
+#include <cstdint>
 #include <opencv2/imgproc.hpp>
 
 namespace scbt {
-namespace {
 
-// `image` (8-bit grey) averaged over factor x factor blocks, as 32-bit floats (the last columns
-// and rows that do not fill a block are left out, so that the scale is exactly `factor`).
-void to_float(const cv::Mat& image, int factor, cv::Mat* averaged, cv::Mat* out) {
-  if (factor == 1) {
-    image.convertTo(*out, CV_32F);
-    return;
+void TranslationEstimator::to_windowed_float(const cv::Mat& image, int factor, cv::Size dft_size,
+                                             cv::Mat* out) {
+  // Averaged over factor x factor blocks; the last columns and rows that do not fill a block are
+  // left out, so that the scale is exactly `factor`.
+  const cv::Mat* averaged = &image;
+  if (factor > 1) {
+    const cv::Size small(image.cols / factor, image.rows / factor);
+    cv::resize(image(cv::Rect(0, 0, small.width * factor, small.height * factor)), averaged_, small,
+               0.0, 0.0, cv::INTER_AREA);
+    averaged = &averaged_;
   }
-  const cv::Size small(image.cols / factor, image.rows / factor);
-  cv::resize(image(cv::Rect(0, 0, small.width * factor, small.height * factor)), *averaged, small,
-             0.0, 0.0, cv::INTER_AREA);
-  averaged->convertTo(*out, CV_32F);
+  const cv::Mat& hann = window(averaged->size());
+  out->create(dft_size, CV_32F);  // the same DFT size from call to call reuses the buffer
+  for (int r = 0; r < dft_size.height; ++r) {
+    float* row = out->ptr<float>(r);
+    if (r >= averaged->rows) {
+      std::fill(row, row + dft_size.width, 0.0f);
+      continue;
+    }
+    const std::uint8_t* in = averaged->ptr<std::uint8_t>(r);
+    const float* w = hann.ptr<float>(r);
+    for (int c = 0; c < averaged->cols; ++c) row[c] = w[c] * static_cast<float>(in[c]);
+    std::fill(row + averaged->cols, row + dft_size.width, 0.0f);
+  }
 }
-
-}  // namespace
 
 const cv::Mat& TranslationEstimator::window(cv::Size size) {
   for (const cv::Mat& w : windows_) {
@@ -44,12 +55,14 @@ std::optional<TranslationEstimate> TranslationEstimator::estimate(const cv::Mat&
          std::min(reference.cols, reference.rows) / (2 * factor) >= kMinSide) {
     factor *= 2;
   }
-  to_float(reference, factor, &averaged_, &reference_float_);
-  to_float(current, factor, &averaged_, &current_float_);
+  const cv::Size dft_size(cv::getOptimalDFTSize(reference.cols / factor),
+                          cv::getOptimalDFTSize(reference.rows / factor));
+  to_windowed_float(reference, factor, dft_size, &reference_float_);
+  to_windowed_float(current, factor, dft_size, &current_float_);
+  const PhaseCorrelation correlation = correlator_.correlate(reference_float_, current_float_);
   TranslationEstimate estimate;
-  const cv::Point2d shift = cv::phaseCorrelate(reference_float_, current_float_,
-                                               window(reference_float_.size()), &estimate.response);
-  estimate.shift = Point(shift.x * factor, shift.y * factor);
+  estimate.shift = Point(correlation.shift.x * factor, correlation.shift.y * factor);
+  estimate.response = correlation.response;
   return estimate;
 }
 

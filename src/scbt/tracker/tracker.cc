@@ -384,8 +384,9 @@ Tracker::Attempt* Tracker::retry_weak(const cv::Mat& frame, Attempt* first, cons
     AdaptiveThresholdOptions this_window = options_.adaptive_thresholds;
     this_window.enabled = true;
     this_window.smooth_noise = false;
+    // Only whether to look again: the noise measured for this camera a few frames ago will do.
     adapt_to_frame(gray_, first->roi.tl(), prior, gradient_threshold_, anchor_threshold_,
-                   this_window, nullptr, &thresholds);
+                   this_window, nullptr, &thresholds, noise_sigma_);
     const bool smooths =
         options_.adaptive_thresholds.smooth_noise &&
         smoothing_for_noise(thresholds.noise_sigma, options_.adaptive_thresholds) > 0.0;

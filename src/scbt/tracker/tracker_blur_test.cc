@@ -4,6 +4,7 @@
 // as without the scaling.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <opencv2/imgproc.hpp>
 #include <sstream>
 
@@ -44,6 +45,34 @@ TEST(TrackerBlurTest, BlurredViewIsFollowedWithThresholdsScaledToItsBlur) {
     EXPECT_LT(scaled.max_error, 2.0) << where.str();
     EXPECT_EQ(scaled.held, 0) << where.str();
     EXPECT_GT(published.held, kPanFrames / 2) << where.str();
+  }
+}
+
+TEST(TrackerBlurTest, BlurSettingInIsMeasuredAndFollowed) {
+  // Sharp at first; then a blur growing by 0.35 px a frame to 3.5 px at full contrast, which
+  // the published thresholds lose on the way; then dim as well, which only the scaled thresholds
+  // find (the test above). The spread must be followed as it grows.
+  constexpr int kSharpFrames = 4, kDimFrom = 14;
+  for (unsigned seed : {1u, 2u}) {
+    const cv::Mat scene = render_hexagon_scene(seed);
+    const auto view = [&](cv::Point corner) {
+      const int k = (corner.x - kPanStart.x) / kPanStep.x;
+      if (k < kSharpFrames) return blurred_view(scene, corner, 1.0, 0.0);
+      const double blur = std::min(3.5, 0.35 * (k - kSharpFrames + 1));
+      return blurred_view(scene, corner, k < kDimFrom ? 1.0 : 0.25, blur);
+    };
+    TrackerOptions options;
+    options.exposure.normalize = false;
+    options.adaptive_thresholds.retry_weak_frames = false;
+    const PanRun scaled = track_pan(options, view);
+    options.blur.adapt = false;
+    const PanRun published = track_pan(options, view);
+    std::ostringstream where;
+    where << "seed " << seed << ": scaled worst " << scaled.max_error << " px, held " << scaled.held
+          << "; published worst " << published.max_error << " px, held " << published.held;
+    EXPECT_LT(scaled.max_error, 2.0) << where.str();
+    EXPECT_EQ(scaled.held, 0) << where.str();
+    EXPECT_GE(published.held, kPanFrames - kDimFrom - 1) << where.str();
   }
 }
 
