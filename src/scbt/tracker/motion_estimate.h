@@ -21,7 +21,7 @@ struct TranslationEstimate {
 // images are too small or differ in size. The default keeps a 380x290 window to ~0.6 ms (one core)
 // instead of ~2 ms, with about a pixel of precision, well inside the search band searched around
 // it. The estimator keeps its buffers and its Hann windows from call to call (a tracker measures
-// every few frames, a coarse estimate and then a full one, each mostly at one size).
+// every few frames, mostly at one size).
 class TranslationEstimator {
  public:
   std::optional<TranslationEstimate> estimate(const cv::Mat& reference, const cv::Mat& current,

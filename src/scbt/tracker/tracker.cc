@@ -141,7 +141,7 @@ void Tracker::attempt(const cv::Mat& frame, const Polygon& prior, Attempt* a, do
     AdaptiveThresholdOptions this_window = options_.adaptive_thresholds;
     this_window.enabled = true;
     detect_on = &adapt_to_frame(gray_, a->roi.tl(), prior, gradient_threshold_, anchor_threshold_,
-                                this_window, &smoothed_gray_, &a->thresholds);
+                                this_window, &smoothed_gray_, &a->thresholds, camera_noise(gray_));
     detector_->set_edge_thresholds(a->thresholds.gradient, a->thresholds.anchor);
   } else if (options_.smooth_noisy_frames && !options_.adaptive_thresholds.enabled &&
              detector_->adapts_thresholds()) {
@@ -199,15 +199,20 @@ void Tracker::attempt(const cv::Mat& frame, const Polygon& prior, Attempt* a, do
       a->stages.filter_ms + a->stages.graph_ms + a->stages.search_ms + a->stages.choice_ms;
 }
 
-const cv::Mat& Tracker::smooth_if_noisy(const cv::Mat& gray, cv::Mat* smoothed,
-                                        bool* thresholds_changed) {
-  // A camera's noise changes slowly: measured on every kNoiseInterval-th frame's first window.
+double Tracker::camera_noise(const cv::Mat& gray) {
+  // A camera's noise changes slowly: measured on the first window of every kNoiseInterval-th
+  // frame that asks.
   constexpr int kNoiseInterval = 8;
   if (noise_sigma_ < 0.0 || frames_since_noise_estimate_ >= kNoiseInterval) {
     noise_sigma_ = estimate_noise_sigma(gray, 4);
     frames_since_noise_estimate_ = 0;
   }
-  const double sigma = smoothing_for_noise(noise_sigma_, options_.adaptive_thresholds);
+  return noise_sigma_;
+}
+
+const cv::Mat& Tracker::smooth_if_noisy(const cv::Mat& gray, cv::Mat* smoothed,
+                                        bool* thresholds_changed) {
+  const double sigma = smoothing_for_noise(camera_noise(gray), options_.adaptive_thresholds);
   if (sigma <= 0.0) return gray;
   cv::GaussianBlur(gray, *smoothed, cv::Size(0, 0), sigma);
   // A step edge's steepest gradient falls with the total smoothing, noise's much faster: the
@@ -384,9 +389,8 @@ Tracker::Attempt* Tracker::retry_weak(const cv::Mat& frame, Attempt* first, cons
     AdaptiveThresholdOptions this_window = options_.adaptive_thresholds;
     this_window.enabled = true;
     this_window.smooth_noise = false;
-    // Only whether to look again: the noise measured for this camera a few frames ago will do.
     adapt_to_frame(gray_, first->roi.tl(), prior, gradient_threshold_, anchor_threshold_,
-                   this_window, nullptr, &thresholds, noise_sigma_);
+                   this_window, nullptr, &thresholds, camera_noise(gray_));
     const bool smooths =
         options_.adaptive_thresholds.smooth_noise &&
         smoothing_for_noise(thresholds.noise_sigma, options_.adaptive_thresholds) > 0.0;

@@ -170,6 +170,9 @@ class Tracker {
   // (Immerkaer's estimate, refreshed every few frames) calls for it, the detector's thresholds
   // then lowered with the smoothing (*thresholds_changed set); otherwise `gray`.
   const cv::Mat& smooth_if_noisy(const cv::Mat& gray, cv::Mat* smoothed, bool* thresholds_changed);
+  // The camera's noise (grey levels), estimated again on `gray` (a window of this frame) when the
+  // last estimate is a few frames old.
+  double camera_noise(const cv::Mat& gray);
   double noise_sigma_ = -1.0;  // grey levels; < 0: estimated on the next window
   int frames_since_noise_estimate_ = 0;
   // TrackerOptions::measure_motion: predicted_ becomes the boundary moved by the image motion

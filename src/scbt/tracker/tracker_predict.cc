@@ -19,16 +19,14 @@ void Tracker::place_by_image_motion(const cv::Mat& frame) {
   if (cv::norm(step) < min_move) return;
   if (reference_gray_.empty()) return;
   to_gray(frame(reference_roi_), &cut_gray_);
+  // Measured on the windows averaged down to at most 64 px a side: a few px of precision, well
+  // inside the band searched around the moved boundary, at about a tenth of the cost of 200 px.
+  constexpr int kSide = 64;
+  const std::optional<TranslationEstimate> image_motion =
+      translation_.estimate(reference_gray_, cut_gray_, kSide);
   // A move the band absorbs is not followed: on a compressed or low-resolution frame the
-  // measured shift of a still scene is noise that walks the band off the boundary. Most measured
-  // moves are that small (a cycle's centroid jitters by a few px on clean video), so a coarse
-  // estimate, about a sixteenth of the cost, decides; a larger move is measured again in full.
-  constexpr int kCoarseSide = 64;
-  std::optional<TranslationEstimate> image_motion =
-      translation_.estimate(reference_gray_, cut_gray_, kCoarseSide);
+  // measured shift of a still scene is noise that walks the band off the boundary.
   if (!image_motion || cv::norm(image_motion->shift) < min_move) return;
-  image_motion = translation_.estimate(reference_gray_, cut_gray_);
-  if (!image_motion) return;
   for (Point& p : predicted_) p += image_motion->shift;
 }
 
