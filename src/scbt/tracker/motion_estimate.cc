@@ -4,6 +4,8 @@
 #include <cstdint>
 #include <opencv2/imgproc.hpp>
 
+#include "scbt/tracker/block_average.h"
+
 namespace scbt {
 
 void TranslationEstimator::to_windowed_float(const cv::Mat& image, int factor, cv::Size dft_size,
@@ -12,9 +14,7 @@ void TranslationEstimator::to_windowed_float(const cv::Mat& image, int factor, c
   // left out, so that the scale is exactly `factor`.
   const cv::Mat* averaged = &image;
   if (factor > 1) {
-    const cv::Size small(image.cols / factor, image.rows / factor);
-    cv::resize(image(cv::Rect(0, 0, small.width * factor, small.height * factor)), averaged_, small,
-               0.0, 0.0, cv::INTER_AREA);
+    average_blocks(image, factor, &averaged_);
     averaged = &averaged_;
   }
   const cv::Mat& hann = window(averaged->size());
