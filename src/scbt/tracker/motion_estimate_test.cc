@@ -96,6 +96,18 @@ TEST(EstimateTranslation, AReusedEstimatorGivesWhatAFreshOneGives) {
   }
 }
 
+// A full-HD window averaged down to 64 px a side (blocks of 32): the shift, scaled back, within
+// the blocks' size.
+TEST(EstimateTranslation, AveragesAFullHDWindowDownToTheSideAskedFor) {
+  const cv::Mat scene = random_texture({2000, 1160}, 31);
+  const cv::Rect window(40, 40, 1920, 1080);
+  const std::optional<TranslationEstimate> estimate =
+      estimate_translation(scene(window), scene(window - cv::Point(24, -16)), 64);
+  ASSERT_TRUE(estimate.has_value());
+  EXPECT_NEAR(estimate->shift.x, 24.0, 32.0);
+  EXPECT_NEAR(estimate->shift.y, -16.0, 32.0);
+}
+
 TEST(EstimateTranslation, RejectsMismatchedOrTinyImages) {
   const cv::Mat a = random_texture({64, 64}, 1);
   EXPECT_FALSE(estimate_translation(a, a(cv::Rect(0, 0, 32, 64)).clone()).has_value());
