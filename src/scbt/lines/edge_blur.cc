@@ -45,6 +45,13 @@ double profile_sigma(const std::array<double, kLength>& profile, double min_step
   return std::sqrt(-2.0 / std::log(std::max(ratio, kSharpest)));
 }
 
+// The total spread (px^2) of a focused camera's step as the detector's gradient sees it: its own
+// smoothing, the camera's, and the central differences'.
+double sharp_spread(double detector_sigma, const EdgeBlurOptions& options) {
+  return detector_sigma * detector_sigma +
+         (options.sharp_sigma * options.sharp_sigma + kDifferenceVariance);
+}
+
 }  // namespace
 
 void EdgeBlurOptions::check() const {
@@ -97,9 +104,8 @@ double estimate_edge_blur(const cv::Mat& gray, cv::Point window_tl, const Polygo
 
 double edge_blur_gain(double sigma, double detector_sigma, const EdgeBlurOptions& options) {
   if (!(sigma > 0.0)) return 1.0;
-  const double own = detector_sigma * detector_sigma;
-  const double sharp = options.sharp_sigma * options.sharp_sigma + kDifferenceVariance;
-  const double gain = std::sqrt((own + sharp) / (own + sigma * sigma));
+  const double gain = std::sqrt(sharp_spread(detector_sigma, options) /
+                                (detector_sigma * detector_sigma + sigma * sigma));
   if (gain > options.max_gain) return 1.0;
   return std::max(gain, options.min_gain);
 }
@@ -109,8 +115,7 @@ double edge_blur_anchor_gain(double sigma, double detector_sigma, const EdgeBlur
   if (gain >= 1.0) return 1.0;
   // The gradient across a step spread by s^2 (all spreads added) is a Gaussian of that variance:
   // its peak exceeds the neighbours 1 px away by a share 1 - exp(-1 / (2 s^2)) of itself.
-  const double sharp = detector_sigma * detector_sigma + options.sharp_sigma * options.sharp_sigma +
-                       kDifferenceVariance;
+  const double sharp = sharp_spread(detector_sigma, options);
   const double spread = sharp / (gain * gain);  // as edge_blur_gain saw it, within its limits
   const double share = 1.0 - std::exp(-1.0 / (2.0 * spread));
   const double sharp_share = 1.0 - std::exp(-1.0 / (2.0 * sharp));

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <opencv2/imgproc.hpp>
 #include <sstream>
+#include <string>
 
 #include "scbt/tracker/hexagon_pan_test_util.h"
 
@@ -23,28 +24,37 @@ cv::Mat blurred_view(const cv::Mat& scene, cv::Point corner, double contrast, do
   return view;
 }
 
-PanRun track_pan(double contrast, double blur, bool adapt, unsigned seed) {
-  const cv::Mat scene = render_hexagon_scene(seed);
+// The blur's scaling on or off, and neither the exposure's scaling nor the weak-frame retry,
+// which lower the thresholds on their own.
+TrackerOptions blur_options(bool adapt) {
   TrackerOptions options;
   options.blur.adapt = adapt;
-  // Neither the exposure's scaling nor the weak-frame retry, which lower the thresholds on their
-  // own.
   options.exposure.normalize = false;
   options.adaptive_thresholds.retry_weak_frames = false;
-  return track_pan(options,
+  return options;
+}
+
+PanRun track_pan(double contrast, double blur, bool adapt, unsigned seed) {
+  const cv::Mat scene = render_hexagon_scene(seed);
+  return track_pan(blur_options(adapt),
                    [&](cv::Point corner) { return blurred_view(scene, corner, contrast, blur); });
+}
+
+std::string describe(unsigned seed, const PanRun& scaled, const PanRun& published) {
+  std::ostringstream where;
+  where << "seed " << seed << ": scaled worst " << scaled.max_error << " px, held " << scaled.held
+        << "; published worst " << published.max_error << " px, held " << published.held;
+  return where.str();
 }
 
 TEST(TrackerBlurTest, BlurredViewIsFollowedWithThresholdsScaledToItsBlur) {
   for (unsigned seed : {1u, 2u, 3u}) {
     const PanRun scaled = track_pan(0.25, 3.5, true, seed);
     const PanRun published = track_pan(0.25, 3.5, false, seed);
-    std::ostringstream where;
-    where << "seed " << seed << ": scaled worst " << scaled.max_error << " px, held " << scaled.held
-          << "; published worst " << published.max_error << " px, held " << published.held;
-    EXPECT_LT(scaled.max_error, 2.0) << where.str();
-    EXPECT_EQ(scaled.held, 0) << where.str();
-    EXPECT_GT(published.held, kPanFrames / 2) << where.str();
+    const std::string where = describe(seed, scaled, published);
+    EXPECT_LT(scaled.max_error, 2.0) << where;
+    EXPECT_EQ(scaled.held, 0) << where;
+    EXPECT_GT(published.held, kPanFrames / 2) << where;
   }
 }
 
@@ -61,18 +71,12 @@ TEST(TrackerBlurTest, BlurSettingInIsMeasuredAndFollowed) {
       const double blur = std::min(3.5, 0.35 * (k - kSharpFrames + 1));
       return blurred_view(scene, corner, k < kDimFrom ? 1.0 : 0.25, blur);
     };
-    TrackerOptions options;
-    options.exposure.normalize = false;
-    options.adaptive_thresholds.retry_weak_frames = false;
-    const PanRun scaled = track_pan(options, view);
-    options.blur.adapt = false;
-    const PanRun published = track_pan(options, view);
-    std::ostringstream where;
-    where << "seed " << seed << ": scaled worst " << scaled.max_error << " px, held " << scaled.held
-          << "; published worst " << published.max_error << " px, held " << published.held;
-    EXPECT_LT(scaled.max_error, 2.0) << where.str();
-    EXPECT_EQ(scaled.held, 0) << where.str();
-    EXPECT_GE(published.held, kPanFrames - kDimFrom - 1) << where.str();
+    const PanRun scaled = track_pan(blur_options(true), view);
+    const PanRun published = track_pan(blur_options(false), view);
+    const std::string where = describe(seed, scaled, published);
+    EXPECT_LT(scaled.max_error, 2.0) << where;
+    EXPECT_EQ(scaled.held, 0) << where;
+    EXPECT_GE(published.held, kPanFrames - kDimFrom - 1) << where;
   }
 }
 
