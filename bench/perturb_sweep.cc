@@ -124,6 +124,7 @@ int main(int argc, char** argv) {
   app.add_option("--roi-padding", options.detector.roi_padding);
   app.add_option("--cost-tolerance", options.cost_tolerance);
   app.add_option("--similarity-exponent", options.similarity_exponent);
+  app.add_option("--shape-weight", options.shape_weight);
   app.add_option("--recover-by-motion", options.recover_by_motion);
   app.add_option("--predict-motion", options.predict_motion);
   app.add_option("--confirm-motion", options.confirm_motion);

@@ -17,7 +17,7 @@ set(SCBT_PUBLIC_HEADERS
     tracker/tracker.h tracker/tracker_options.h tracker/track_state.h tracker/confidence.h
     tracker/box_init.h tracker/cycle_stage.h tracker/motion_model.h tracker/reacquire.h
     tracker/contrast_profile.h tracker/frame_checks.h tracker/scene_keyframes.h
-    tracker/motion_estimate.h tracker/phase_correlation.h
+    tracker/motion_estimate.h tracker/phase_correlation.h tracker/shape_memory.h
     tracker/reacquire_view_change.h tracker/reacquire_appearance.h
     depth/boundary_3d.h depth/boundary_3d_io.h depth/camera_info.h depth/circle_fit.h
     depth/depth_options.h depth/pinhole_camera.h)

@@ -117,7 +117,7 @@ class Tracker:
     gradient_threshold=36, anchor_threshold=8, scan_interval=1, sigma=1.0,
     min_line_length=-1.0 (automatic), line_fit_error=1.0, crop_to_boundary=True,
     roi_padding=8.0, filter_distance=20.0, min_area_similarity=0.9, cost_tolerance=0.1,
-    similarity_exponent=0.5, max_segments=1500, seed_stride=2, loss_handling=True,
+    similarity_exponent=0.5, shape_weight=4.0, max_segments=1500, seed_stride=2, loss_handling=True,
     normalize_exposure=True, adapt_to_blur=True, predict_motion=True, keep_debug=False.
     Raises ValueError naming a bad value, TypeError for an unknown option.
     """
@@ -138,6 +138,7 @@ class Tracker:
         min_area_similarity: float = ...,
         cost_tolerance: float = ...,
         similarity_exponent: float = ...,
+        shape_weight: float = ...,
         max_segments: int = ...,
         seed_stride: int = ...,
         loss_handling: bool = ...,

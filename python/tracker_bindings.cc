@@ -60,6 +60,8 @@ TrackerOptions tracker_options_from_kwargs(const py::kwargs& kwargs, bool* keep_
         options.cost_tolerance = value.cast<double>();
       } else if (key == "similarity_exponent") {
         options.similarity_exponent = value.cast<double>();
+      } else if (key == "shape_weight") {
+        options.shape_weight = value.cast<double>();
       } else if (key == "max_segments") {
         options.max_segments = value.cast<int>();
       } else if (key == "seed_stride") {
@@ -100,6 +102,7 @@ py::dict options_to_dict(const TrackerOptions& o, bool keep_debug) {
   d["min_area_similarity"] = o.min_area_similarity;
   d["cost_tolerance"] = o.cost_tolerance;
   d["similarity_exponent"] = o.similarity_exponent;
+  d["shape_weight"] = o.shape_weight;
   d["seed_stride"] = o.bdsp.seed_stride;
   d["loss_handling"] = o.loss.enabled;
   d["normalize_exposure"] = o.exposure.normalize;
@@ -290,7 +293,7 @@ void register_tracker(py::module_& m) {
       "  min_line_length=-1 (automatic), line_fit_error=1.0,\n"
       "  crop_to_boundary=True, roi_padding=8.0, filter_distance=20.0,\n"
       "  min_area_similarity=0.9, cost_tolerance=0.1, similarity_exponent=0.5,\n"
-      "  max_segments=1500,\n"
+      "  shape_weight=4.0, max_segments=1500,\n"
       "  seed_stride=2, loss_handling=True, normalize_exposure=True, adapt_to_blur=True,\n"
       "  predict_motion=True, keep_debug=False.\n"
       "Raises ValueError naming a bad value, TypeError for an unknown option.")

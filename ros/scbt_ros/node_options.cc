@@ -132,8 +132,9 @@ std::optional<std::vector<double>> read_numbers(const ros::NodeHandle& node,
 const std::vector<std::string>& known_parameters() {
   static const std::vector<std::string> names = {
       "detector", "filter_distance", "min_area_similarity", "cost_tolerance", "similarity_exponent",
-      "recover_by_motion", "adapt_to_blur", "seed_stride", "gradient_threshold", "anchor_threshold",
-      "min_line_length", "max_segments", "use_depth", "sync_queue_size", "init_polygon", "init_box",
+      "shape_weight", "recover_by_motion", "adapt_to_blur", "seed_stride", "gradient_threshold",
+      "anchor_threshold", "min_line_length", "max_segments", "use_depth", "sync_queue_size",
+      "init_polygon", "init_box",
       // Read by image_transport: which transport (raw, compressed, ...) to subscribe with.
       "image_transport"};
   return names;
@@ -172,6 +173,7 @@ NodeOptions read_node_options(const ros::NodeHandle& node) {
   read_double(node, "min_area_similarity", &t.min_area_similarity);
   read_double(node, "cost_tolerance", &t.cost_tolerance);
   read_double(node, "similarity_exponent", &t.similarity_exponent);
+  read_double(node, "shape_weight", &t.shape_weight);
   read_bool(node, "recover_by_motion", &t.recover_by_motion);
   read_bool(node, "adapt_to_blur", &t.blur.adapt);
   read_int(node, "seed_stride", &t.bdsp.seed_stride);

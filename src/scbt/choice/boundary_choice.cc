@@ -51,4 +51,23 @@ int StableChooser::closest_near_tie() {
   return best_index;
 }
 
+double StableChooser::shape_factor(const SegmentGraph& graph, const RankingWeights& weights) {
+  // The descriptor samples the outline from its first vertex: one cycle closed from different
+  // seeds (another start or direction) is described from one start and direction, so that it is
+  // weighed the same whichever copy the choice meets.
+  const int n = static_cast<int>(cycle_.size());
+  int start = 0;
+  for (int i = 1; i < n; ++i) {
+    const Point& p = graph.vertices[cycle_[i]];
+    const Point& s = graph.vertices[cycle_[start]];
+    if (p.y < s.y || (p.y == s.y && p.x < s.x)) start = i;
+  }
+  outline_.clear();
+  for (int i = 0; i < n; ++i) outline_.push_back(graph.vertices[cycle_[(start + i) % n]]);
+  if (signed_area(outline_) < 0.0) std::reverse(outline_.begin() + 1, outline_.end());
+  const double change =
+      std::min(1.0, shape_distance(affine_shape_descriptor(outline_), *weights.shape_reference));
+  return std::exp(weights.shape_weight * change);
+}
+
 }  // namespace scbt

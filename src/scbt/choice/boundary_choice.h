@@ -10,6 +10,7 @@
 
 #include "scbt/choice/boundary_distance_cache.h"
 #include "scbt/cycles/bdsp.h"
+#include "scbt/geometry/shape_descriptor.h"
 
 namespace scbt {
 
@@ -41,6 +42,19 @@ struct BoundaryChoice {
 std::optional<BoundaryChoice> choose_boundary(const std::vector<CycleCandidate>& candidates,
                                               double previous_area, double min_similarity);
 
+// How StableChooser ranks the candidates that pass the area gate, beyond the paper's Γ.
+struct RankingWeights {
+  // k: candidates are ranked by Γ / S^k (S: their area similarity, Eq. 2) instead of Γ alone; 0 is
+  // the paper's rule. Γ = gap / area favours a larger cycle for its area alone (10 % larger, about
+  // 9 % cheaper at the same gap), which lets a cycle creep outward frame by frame inside the gate;
+  // S^k takes part of that back for any change of area.
+  double similarity_exponent = 0.0;
+  // w: and by exp(w d), d the shape_distance of their affine shape (affine_shape_descriptor) to
+  // `shape_reference` (at most 1). 0, or no valid reference, leaves the ranking to Γ / S^k.
+  double shape_weight = 0.0;
+  const ShapeDescriptor* shape_reference = nullptr;
+};
+
 // The stabilised choice with its buffers and distance cache kept across frames, over any list
 // of candidates that carry `gap_length` and `area`, whose cycles (graph vertex ids) are listed on
 // demand by `list_vertices(index, std::vector<int>* out)`: only near-tied candidates are ever
@@ -48,10 +62,8 @@ std::optional<BoundaryChoice> choose_boundary(const std::vector<CycleCandidate>&
 // (reference/plain_choice.h) does, distances equal up to rounding.
 // `known` (optional): distances to `previous` already computed for the graph's segments.
 // `gate_area` (when > 0): the area the gate compares candidates with instead of `previous`'s.
-// `similarity_exponent` k: candidates are ranked by Γ / S^k (S: their area similarity, Eq. 2)
-// instead of Γ alone; 0 is the paper's rule. Γ = gap / area favours a larger cycle for its area
-// alone (10 % larger, about 9 % cheaper at the same gap), which lets a cycle creep outward
-// frame by frame inside the gate; S^k takes part of that back for any change of area.
+// `weights`: the ranking (the paper's Γ alone by default); near ties are those within
+// (1 + tolerance) of the least weighted cost.
 class StableChooser {
  public:
   template <class Candidate, class ListVertices>
@@ -60,7 +72,7 @@ class StableChooser {
                                        const Polygon& previous, double min_similarity,
                                        double tolerance,
                                        const KnownSegmentDistances* known = nullptr,
-                                       double gate_area = 0.0, double similarity_exponent = 0.0);
+                                       double gate_area = 0.0, const RankingWeights& weights = {});
 
  private:
   struct NearTie {
@@ -72,6 +84,8 @@ class StableChooser {
   // Picks among near_ties_ (filled, cycles listed, from_distance set); returns the candidate
   // index, -1 if no distance is finite.
   int closest_near_tie();
+  // exp(w d) for cycle_ (RankingWeights::shape_weight).
+  double shape_factor(const SegmentGraph& graph, const RankingWeights& weights);
 
   std::vector<double> admissible_cost_;
   // A near tie's sort key next to its index, so that the sort reads one array.
@@ -85,13 +99,23 @@ class StableChooser {
   std::vector<int> cycle_edges_;  // per entry of cycles_, the edge ending there (edge_between)
   std::vector<int> cycle_;
   BoundaryDistanceCache cache_;
+  // The candidates within the bound, one per cycle, with their weighted cost.
+  struct Weighed {
+    int index, rank;
+    double cost;
+    int begin, end;  // its cycle in `weighed_cycles_`
+  };
+  std::vector<Weighed> weighed_;
+  std::vector<int> weighed_cycles_;
+  Polygon outline_;  // shape_factor's
 };
 
 template <class Candidate, class ListVertices>
 std::optional<BoundaryChoice> StableChooser::choose(
     const std::vector<Candidate>& candidates, ListVertices&& list_vertices,
     const SegmentGraph& graph, const Polygon& previous, double min_similarity, double tolerance,
-    const KnownSegmentDistances* known, double gate_area, double similarity_exponent) {
+    const KnownSegmentDistances* known, double gate_area, const RankingWeights& weights) {
+  const double similarity_exponent = weights.similarity_exponent;
   const double previous_area = gate_area > 0.0 ? gate_area : area(previous);
   BoundaryChoice best;
   // Each candidate's cost, kept for the near-tie pass below (NaN: not admissible, so that no
@@ -119,7 +143,15 @@ std::optional<BoundaryChoice> StableChooser::choose(
   }
   if (best.index < 0) return std::nullopt;
   if (tolerance <= 0.0) return best;
-  const double bound = best.cost * (1.0 + tolerance);
+  const bool weigh_shape =
+      weights.shape_weight > 0.0 && weights.shape_reference && weights.shape_reference->valid;
+  // A weighted cost is at least the cost, and the least weighted cost at most the best's: no
+  // candidate dearer than (1 + tolerance) times the best's weighted cost can tie.
+  double bound = best.cost * (1.0 + tolerance);
+  if (weigh_shape) {
+    list_vertices(best.index, &cycle_);
+    bound *= shape_factor(graph, weights);
+  }
 
   order_.clear();
   for (int i = 0; i < static_cast<int>(candidates.size()); ++i) {
@@ -134,10 +166,10 @@ std::optional<BoundaryChoice> StableChooser::choose(
   std::sort(order_.begin(), order_.end(), [](const Keyed& a, const Keyed& b) {
     return a.area < b.area || (a.area == b.area && a.gap_length < b.gap_length);
   });
-  near_ties_.clear();
-  cycles_.clear();
-  cache_.reset(graph, previous, known);
-  cycle_edges_.clear();
+  weighed_.clear();
+  weighed_cycles_.clear();
+  double least = std::numeric_limits<double>::infinity();
+  int least_index = best.index;
   for (size_t k = 0; k < order_.size(); ++k) {
     const Keyed& c = order_[k];
     if (k > 0) {
@@ -145,16 +177,37 @@ std::optional<BoundaryChoice> StableChooser::choose(
       if (before.area == c.area && before.gap_length == c.gap_length) continue;
     }
     list_vertices(c.index, &cycle_);
+    double cost = admissible_cost_[c.index];
+    if (weigh_shape) cost *= shape_factor(graph, weights);
+    weighed_.push_back(
+        {c.index, static_cast<int>(k), cost, static_cast<int>(weighed_cycles_.size()), 0});
+    weighed_cycles_.insert(weighed_cycles_.end(), cycle_.begin(), cycle_.end());
+    weighed_.back().end = static_cast<int>(weighed_cycles_.size());
+    if (cost < least) {
+      least = cost;
+      least_index = c.index;
+    }
+  }
+  near_ties_.clear();
+  cycles_.clear();
+  cache_.reset(graph, previous, known);
+  cycle_edges_.clear();
+  for (const Weighed& w : weighed_) {
+    if (!(w.cost <= least * (1.0 + tolerance))) continue;
+    cycle_.assign(weighed_cycles_.begin() + w.begin, weighed_cycles_.begin() + w.end);
     // The cycle's edges are found once, here, and kept for the other direction.
-    NearTie tie{c.index, static_cast<int>(k),
-                cache_.mean_distance_from_cycle(cycle_, &cycle_edges_),
+    NearTie tie{w.index, w.rank, cache_.mean_distance_from_cycle(cycle_, &cycle_edges_),
                 static_cast<int>(cycles_.size()), 0};
     cycles_.insert(cycles_.end(), cycle_.begin(), cycle_.end());
     tie.end = static_cast<int>(cycles_.size());
     near_ties_.push_back(tie);
   }
   const int closest = closest_near_tie();
-  if (closest >= 0) best.index = closest;
+  if (closest >= 0) {
+    best.index = closest;
+  } else if (weigh_shape) {
+    best.index = least_index;
+  }
   const Candidate& chosen = candidates[best.index];
   best.cost = grouping_cost(chosen.gap_length, chosen.area);
   best.similarity = area_similarity(previous_area, chosen.area);

@@ -248,6 +248,47 @@ TEST(ChooseBoundaryStable, SimilarityExponentStopsACycleCreepingOutward) {
   }
 }
 
+// A rim's outline against a cycle that leaks out through one stretch of it into the background
+// (a bulge, 8 % more area, 15 % cheaper): the area weighting does not reverse a lead beyond the
+// tolerance, the shape weighting does; and it does not hold back the same rim seen more
+// obliquely, whose affine shape is the same.
+TEST(ChooseBoundaryStable, ShapeWeightStopsALeakThroughOneStretch) {
+  const Polygon previous = regular(24, Point(300, 240), 80.0);
+  Polygon leak = previous;
+  for (int i = 0; i < 4; ++i) leak[i] = Point(300, 240) + (leak[i] - Point(300, 240)) * 1.25;
+  const double gap = 12.0;
+  HandMade made;
+  made.add(previous, gap);
+  made.add(leak, gap * 0.85 * area(leak) / area(previous));
+  ASSERT_GT(area_similarity(area(previous), area(leak)), 0.9);
+  const ShapeDescriptor reference = affine_shape_descriptor(previous);
+  auto choose = [&](const HandMade& m, const RankingWeights& weights) {
+    StableChooser chooser;
+    return chooser.choose(
+        m.candidates, [&](int i, std::vector<int>* out) { *out = m.candidates[i].vertices; },
+        m.graph, previous, 0.9, 0.1, nullptr, 0.0, weights);
+  };
+  EXPECT_EQ(choose(made, {0.5})->index, 1);
+  const auto weighed = choose(made, {0.5, 4.0, &reference});
+  ASSERT_TRUE(weighed);
+  EXPECT_EQ(weighed->index, 0);
+  // The reported cost stays Γ.
+  EXPECT_DOUBLE_EQ(weighed->cost, gap / made.candidates[0].area);
+  // No valid reference: the weight is not applied.
+  const ShapeDescriptor none;
+  EXPECT_EQ(choose(made, {0.5, 4.0, &none})->index, 1);
+  EXPECT_EQ(choose(made, {0.5, 4.0, nullptr})->index, 1);
+
+  // The rim foreshortened by 8 % (the same area within the gate), cheaper: taken either way.
+  Polygon oblique;
+  for (const Point& p : previous) oblique.emplace_back(p.x, 240 + (p.y - 240) * 0.92);
+  HandMade tilted;
+  tilted.add(previous, gap);
+  tilted.add(oblique, gap * 0.85 * area(oblique) / area(previous));
+  EXPECT_EQ(choose(tilted, {0.5})->index, 1);
+  EXPECT_EQ(choose(tilted, {0.5, 4.0, &reference})->index, 1);
+}
+
 TEST(BoundaryDistance, IdentitySymmetryAndTranslation) {
   std::mt19937 rng(77);
   std::uniform_real_distribution<double> pos(-100.0, 100.0), radius(5.0, 60.0), angle(-kPi, kPi),
@@ -343,6 +384,52 @@ std::vector<Segment> segments_near(const Polygon& outline, std::mt19937& rng) {
   return segments;
 }
 
+// The polygon from its lowest vertex (least y, then x), counter-clockwise in y-down coordinates
+// (positive signed area): how the choice describes a cycle whichever seed closed it.
+Polygon from_lowest_vertex(const Polygon& polygon) {
+  const auto lowest = std::min_element(
+      polygon.begin(), polygon.end(),
+      [](const Point& a, const Point& b) { return a.y < b.y || (a.y == b.y && a.x < b.x); });
+  Polygon out(lowest, polygon.end());
+  out.insert(out.end(), polygon.begin(), lowest);
+  if (signed_area(out) < 0.0) std::reverse(out.begin() + 1, out.end());
+  return out;
+}
+
+// The choice with RankingWeights written out over every candidate, whole polygons.
+std::optional<BoundaryChoice> reference_weighted_choice(
+    const std::vector<CycleCandidate>& candidates, const SegmentGraph& graph,
+    const Polygon& previous, double min_similarity, double tolerance,
+    const RankingWeights& weights) {
+  const double previous_area = area(previous);
+  std::vector<double> cost(candidates.size(), std::numeric_limits<double>::infinity());
+  double least = std::numeric_limits<double>::infinity();
+  for (size_t i = 0; i < candidates.size(); ++i) {
+    const CycleCandidate& c = candidates[i];
+    const double s = area_similarity(previous_area, c.area);
+    if (!(s > min_similarity)) continue;
+    const double d = std::min(
+        1.0,
+        shape_distance(affine_shape_descriptor(from_lowest_vertex(candidate_polygon(graph, c))),
+                       *weights.shape_reference));
+    cost[i] = grouping_cost(c.gap_length, c.area) / std::pow(s, weights.similarity_exponent) *
+              std::exp(weights.shape_weight * d);
+    least = std::min(least, cost[i]);
+  }
+  if (!std::isfinite(least)) return std::nullopt;
+  BoundaryChoice best;
+  double best_distance = std::numeric_limits<double>::infinity();
+  for (size_t i = 0; i < candidates.size(); ++i) {
+    if (!(cost[i] <= least * (1.0 + tolerance))) continue;
+    const double d = boundary_distance(candidate_polygon(graph, candidates[i]), previous);
+    if (best.index < 0 || d < best_distance) {
+      best_distance = d;
+      best.index = static_cast<int>(i);
+    }
+  }
+  return best;
+}
+
 class StableChooserProperty : public ::testing::TestWithParam<unsigned> {};
 
 // On BDSP's candidates of random graphs, the cached, pruned chooser picks the cycle the plain
@@ -376,6 +463,20 @@ TEST_P(StableChooserProperty, PicksWhatThePlainScanPicks) {
     EXPECT_NEAR(expected->cost, got->cost, 1e-9 * expected->cost);
     EXPECT_EQ(expected->num_admissible, got->num_admissible);
     EXPECT_EQ(choose_boundary_stable(candidates, graph, previous, 0.5, tol)->index, got->index);
+
+    // With the ranking weighted (tolerance > 0: the weights act through the near-tie pass).
+    const ShapeDescriptor reference = affine_shape_descriptor(outline);
+    const RankingWeights weights{0.5, 4.0, &reference};
+    const double weighed_tol = std::max(tol, 0.01);
+    const auto weighed_expected =
+        reference_weighted_choice(candidates, graph, previous, 0.5, weighed_tol, weights);
+    const auto weighed = chooser.choose(
+        candidates, [&](int i, std::vector<int>* out) { *out = candidates[i].vertices; }, graph,
+        previous, 0.5, weighed_tol, nullptr, 0.0, weights);
+    ASSERT_EQ(weighed_expected.has_value(), weighed.has_value());
+    EXPECT_NEAR(
+        boundary_distance(candidate_polygon(graph, candidates[weighed_expected->index]), previous),
+        boundary_distance(candidate_polygon(graph, candidates[weighed->index]), previous), 1e-9);
   }
 }
 

@@ -27,6 +27,11 @@ void add_tracker_options(CLI::App* command, TrackerOptions* options, std::string
                    "something, so that a cycle does not creep outward (0: the paper's rule)")
       ->capture_default_str();
   command
+      ->add_option("--shape-weight", options->shape_weight,
+                   "Candidates are also ranked by exp(w x their change of shape from the recent "
+                   "confident boundaries): a leak into the background costs something (0: off)")
+      ->capture_default_str();
+  command
       ->add_option("--recover-by-motion", options->recover_by_motion,
                    "When lost, search again where image motion moved the boundary (true/false)")
       ->capture_default_str();

@@ -38,7 +38,7 @@ std::optional<BoundaryChoice> choose_boundary_stable(const std::vector<CycleCand
   StableChooser chooser;
   return chooser.choose(
       candidates, [&](int index, std::vector<int>* cycle) { *cycle = candidates[index].vertices; },
-      graph, previous, min_similarity, tolerance, nullptr, 0.0, similarity_exponent);
+      graph, previous, min_similarity, tolerance, nullptr, 0.0, {similarity_exponent});
 }
 
 }  // namespace scbt

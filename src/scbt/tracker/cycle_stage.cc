@@ -7,10 +7,10 @@ std::optional<BoundaryChoice> CycleStage::choose(StableChooser* chooser, const S
                                                  double tolerance,
                                                  const KnownSegmentDistances* known,
                                                  double gate_area,
-                                                 double similarity_exponent) const {
+                                                 const RankingWeights& weights) const {
   return chooser->choose(
       summaries(), [this](int index, std::vector<int>* cycle) { vertices(index, cycle); }, graph,
-      previous, min_similarity, tolerance, known, gate_area, similarity_exponent);
+      previous, min_similarity, tolerance, known, gate_area, weights);
 }
 
 Polygon CycleStage::polygon(const SegmentGraph& graph, int index) const {

@@ -30,7 +30,7 @@ class CycleStage {
                                        const Polygon& previous, double min_similarity,
                                        double tolerance, const KnownSegmentDistances* known,
                                        double gate_area = 0.0,
-                                       double similarity_exponent = 0.0) const;
+                                       const RankingWeights& weights = {}) const;
   int num_candidates() const { return static_cast<int>(summaries().size()); }
   Polygon polygon(const SegmentGraph& graph, int index) const;
   double area(int index) const { return summaries()[index].area; }

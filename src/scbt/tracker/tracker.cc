@@ -111,6 +111,7 @@ void Tracker::init(const cv::Mat& frame, const Polygon& polygon) {
   adapted_first_ = false;
   noise_sigma_ = -1.0;
   appearance_.remember(frame, boundary_);
+  shape_memory_.restart(boundary_);
   monitor_.reset(polygon, sample_edges(polygon, reference_gray_, {0, 0}, 0.0).inside_level);
   pending_.clear();
   pending_matches_ = 0;
@@ -190,10 +191,12 @@ void Tracker::attempt(const cv::Mat& frame, const Polygon& prior, Attempt* a, do
   KnownSegmentDistances known{&a->kept, &a->kept_distances};
   const KnownSegmentDistances* known_if_any = a->num_dropped == 0 ? &known : nullptr;
   // Not while lost: an object found again may be nearer or farther than when it was lost.
-  const double similarity_exponent =
-      monitor_.state() != TrackState::kLost ? options_.similarity_exponent : 0.0;
+  RankingWeights weights;
+  if (monitor_.state() != TrackState::kLost) {
+    weights = {options_.similarity_exponent, options_.shape_weight, &shape_memory_.descriptor()};
+  }
   a->choice = a->cycles->choose(&chooser_, a->graph, prior, min_similarity, options_.cost_tolerance,
-                                known_if_any, gate_area, similarity_exponent);
+                                known_if_any, gate_area, weights);
   a->stages.choice_ms = lap();
   a->grouping_ms =
       a->stages.filter_ms + a->stages.graph_ms + a->stages.search_ms + a->stages.choice_ms;
@@ -450,7 +453,10 @@ TrackResult Tracker::track(const cv::Mat& frame) {
     motion_.update_held();
   }
   result.state = monitor_.update(boundary_, result.confidence, result.held, result.evidence);
-  if (result.state == TrackState::kTracking) keyframes_.offer(frame, boundary_);
+  if (result.state == TrackState::kTracking) {
+    keyframes_.offer(frame, boundary_);
+    if (options_.shape_weight > 0.0) shape_memory_.remember(boundary_);
+  }
   if (result.state == TrackState::kLost && !result.held) {
     // Lost on a boundary found but not trusted: back to the newest confident one. Lost on a held
     // frame, the held boundary stays (the last found, nearest to where the object went).

@@ -17,6 +17,7 @@
 #include "scbt/tracker/reacquire.h"
 #include "scbt/tracker/reacquire_view_change.h"
 #include "scbt/tracker/scene_keyframes.h"
+#include "scbt/tracker/shape_memory.h"
 #include "scbt/tracker/track_state.h"
 #include "scbt/tracker/tracker_options.h"
 
@@ -223,7 +224,8 @@ class Tracker {
   int pending_matches_ = 0;
   SegmentGraph match_graph_;  // the graph the best match while lost was found in
   int match_kept_ = 0;
-  StableChooser chooser_;  // its buffers and distance cache are reused frame to frame
+  StableChooser chooser_;     // its buffers and distance cache are reused frame to frame
+  ShapeMemory shape_memory_;  // the shape the choice weighs candidates against
   bool keep_debug_ = false;
   TrackDebug debug_;
 };

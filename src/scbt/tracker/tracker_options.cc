@@ -25,6 +25,10 @@ void TrackerOptions::check() const {
     throw std::invalid_argument("similarity_exponent must be in [0, 10], got " +
                                 std::to_string(similarity_exponent));
   }
+  if (!(shape_weight >= 0.0 && shape_weight <= 100.0)) {
+    throw std::invalid_argument("shape_weight must be in [0, 100], got " +
+                                std::to_string(shape_weight));
+  }
   if (!(cost_tolerance >= 0.0 && cost_tolerance <= 10.0)) {
     throw std::invalid_argument("cost_tolerance must be in [0, 10], got " +
                                 std::to_string(cost_tolerance));

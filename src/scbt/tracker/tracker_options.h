@@ -28,6 +28,12 @@ struct TrackerOptions {
   // its area, and a cycle creeping outward inside the gate (a rim blurred, compressed or seen at
   // a low frame rate taking in some of the background) wins frame after frame. Not while lost.
   double similarity_exponent = 0.5;
+  // Candidates are also ranked by exp(w d), w this weight and d their affine shape's distance to
+  // the one remembered over the confident frames (ShapeMemory, RankingWeights); 0 is off. A rim
+  // whose edge fades against a background of its colour (blur, low contrast) leaks into that
+  // background a little each frame, too little to notice against the frame before; the outline's
+  // shape drifts from what it was while the object's own hardly changes. Not while lost.
+  double shape_weight = 4.0;
   // When no candidate qualifies, estimate the image motion around the boundary since it was last
   // tracked (phase correlation) and search again where it moved, instead of holding it in place.
   bool recover_by_motion = true;
