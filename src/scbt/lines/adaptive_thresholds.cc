@@ -79,16 +79,21 @@ double boundary_edge_strength(const cv::Mat& gray, cv::Point offset, const Polyg
   strengths.reserve(samples);
   const int reach_px = static_cast<int>(std::ceil(reach));
   std::vector<double> across(2 * reach_px + 3);
+  const GreySampler sampler(gray);
   for_each_boundary_sample(boundary, offset, samples, [&](Point p, Point t, Point normal) {
     if (p.x < 1 || p.y < 1 || p.x > gray.cols - 2 || p.y > gray.rows - 2) return;
+    // The points read lie within sqrt((reach_px + 1)^2 + 1) px of p: when a wider disc is inside
+    // the image, none needs clamping.
+    const bool all_inside = sampler.holds_disc(p, reach_px + 2.0);
     // The steepest slope across the boundary, each difference averaged over three points
     // along it to damp noise: the grey levels across it (summed along it) are read once, and
     // the slope at k is the difference of those at k + 1 and k - 1.
     for (int m = -reach_px - 1; m <= reach_px + 1; ++m) {
+      const Point at = p + normal * m;
       double sum = 0.0;
       for (int j = -1; j <= 1; ++j) {
-        const Point q = p + normal * m + t * j;
-        sum += bilinear_grey(gray, q.x, q.y);
+        const Point q = at + t * j;
+        sum += all_inside ? sampler.inside(q.x, q.y) : sampler.clamped(q.x, q.y);
       }
       across[m + reach_px + 1] = sum;
     }

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <algorithm>
+#include <cstddef>
 #include <cstdint>
 #include <opencv2/core/mat.hpp>
 #include <opencv2/core/types.hpp>
@@ -11,17 +12,44 @@
 
 namespace scbt {
 
+// Bilinear samples of an 8-bit grey image, its rows and size read out of the cv::Mat once: the
+// measurements read thousands of points per frame.
+class GreySampler {
+ public:
+  explicit GreySampler(const cv::Mat& gray)
+      : data_(gray.data),
+        step_(gray.step[0]),
+        max_x_(gray.cols - 1.001),
+        max_y_(gray.rows - 1.001) {}
+
+  // The sample at (x, y), clamped to the border.
+  double clamped(double x, double y) const {
+    return inside(std::clamp(x, 0.0, max_x_), std::clamp(y, 0.0, max_y_));
+  }
+  // The same for a point the clamp leaves alone: x in [0, cols - 1.001], y in [0, rows - 1.001].
+  double inside(double x, double y) const {
+    const int x0 = static_cast<int>(x), y0 = static_cast<int>(y);
+    const double fx = x - x0, fy = y - y0;
+    const std::uint8_t* r0 = data_ + static_cast<size_t>(y0) * step_ + x0;
+    const std::uint8_t* r1 = r0 + step_;
+    const double top = r0[0] + fx * (r0[1] - r0[0]);
+    const double bottom = r1[0] + fx * (r1[1] - r1[0]);
+    return top + fy * (bottom - top);
+  }
+  // Whether every point within `radius` of p is one the clamp leaves alone.
+  bool holds_disc(Point p, double radius) const {
+    return p.x >= radius && p.y >= radius && p.x + radius <= max_x_ && p.y + radius <= max_y_;
+  }
+
+ private:
+  const std::uint8_t* data_;
+  size_t step_;
+  double max_x_, max_y_;
+};
+
 // Bilinear sample of an 8-bit grey image (clamped to the border).
 inline double bilinear_grey(const cv::Mat& gray, double x, double y) {
-  x = std::clamp(x, 0.0, gray.cols - 1.001);
-  y = std::clamp(y, 0.0, gray.rows - 1.001);
-  const int x0 = static_cast<int>(x), y0 = static_cast<int>(y);
-  const double fx = x - x0, fy = y - y0;
-  const std::uint8_t* r0 = gray.ptr<std::uint8_t>(y0);
-  const std::uint8_t* r1 = gray.ptr<std::uint8_t>(y0 + 1);
-  const double top = r0[x0] + fx * (r0[x0 + 1] - r0[x0]);
-  const double bottom = r1[x0] + fx * (r1[x0 + 1] - r1[x0]);
-  return top + fy * (bottom - top);
+  return GreySampler(gray).clamped(x, y);
 }
 
 // Calls visit(point, tangent, normal) at `samples` points spaced evenly along the closed

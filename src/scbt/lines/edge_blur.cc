@@ -80,22 +80,31 @@ double estimate_edge_blur(const cv::Mat& gray, cv::Point window_tl, const Polygo
   std::vector<double> sigmas;
   sigmas.reserve(static_cast<size_t>(options.samples));
   std::array<double, kLength> profile;
-  for_each_boundary_sample(
-      boundary, window_tl, options.samples, [&](Point p, Point t, Point normal) {
-        // profile[k] is kReach - k px along the normal; the step's sign does not matter.
-        for (int k = 0; k < kLength; ++k) {
-          double sum = 0.0;
-          for (int lane = -1; lane <= 1; ++lane) {
-            const Point q =
-                p + normal * static_cast<double>(kReach - k) + t * static_cast<double>(lane);
-            if (!inside(gray, q)) return;
-            sum += bilinear_grey(gray, q.x, q.y);
-          }
-          profile[k] = sum / 3.0;
+  const GreySampler sampler(gray);
+  // The spread of the step the boundary crosses at p, if it crosses one clearly.
+  const auto measure = [&](Point p, Point t, Point normal) {
+    // The points read lie within sqrt(kReach^2 + 1) px of p: when a wider disc is inside the
+    // image, none needs checking or clamping.
+    const bool all_inside = sampler.holds_disc(p, kReach + 1.0);
+    // profile[k] is kReach - k px along the normal; the step's sign does not matter.
+    for (int k = 0; k < kLength; ++k) {
+      const Point across = p + normal * static_cast<double>(kReach - k);
+      double sum = 0.0;
+      for (int lane = -1; lane <= 1; ++lane) {
+        const Point q = across + t * static_cast<double>(lane);
+        if (all_inside) {
+          sum += sampler.inside(q.x, q.y);
+        } else {
+          if (!inside(gray, q)) return;
+          sum += sampler.clamped(q.x, q.y);
         }
-        const double sigma = profile_sigma(profile, min_step);
-        if (sigma > 0.0) sigmas.push_back(sigma);
-      });
+      }
+      profile[k] = sum / 3.0;
+    }
+    const double sigma = profile_sigma(profile, min_step);
+    if (sigma > 0.0) sigmas.push_back(sigma);
+  };
+  for_each_boundary_sample(boundary, window_tl, options.samples, measure);
   if (static_cast<int>(sigmas.size()) < options.min_edges) return -1.0;
   const auto middle = sigmas.begin() + static_cast<std::ptrdiff_t>(sigmas.size() / 2);
   std::nth_element(sigmas.begin(), middle, sigmas.end());
