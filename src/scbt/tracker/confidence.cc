@@ -67,7 +67,8 @@ EdgeSamples sample_edges(const Polygon& boundary, const cv::Mat& gray, cv::Point
 
 BoundaryEvidence measure_evidence(const Polygon& boundary, double gap_length,
                                   const Polygon& previous, const ShapeDescriptor& reference,
-                                  const cv::Mat& gray, cv::Point gray_origin, double min_step) {
+                                  const cv::Mat& gray, cv::Point gray_origin, double min_step,
+                                  ShapeDescriptor* descriptor) {
   BoundaryEvidence e;
   const double length = perimeter(boundary);
   e.gap_share = length > 0.0 ? std::clamp(gap_length / length, 0.0, 1.0) : 1.0;
@@ -75,7 +76,9 @@ BoundaryEvidence measure_evidence(const Polygon& boundary, double gap_length,
   e.edge_support = edges.support;
   e.inside_level = edges.inside_level;
   // An invalid descriptor (no area) is as unlike the reference as shapes get.
-  e.shape_change = std::min(1.0, shape_distance(shape_descriptor(boundary), reference));
+  const ShapeDescriptor shape = shape_descriptor(boundary);
+  e.shape_change = std::min(1.0, shape_distance(shape, reference));
+  if (descriptor != nullptr) *descriptor = shape;
   const double size = std::sqrt(area(boundary));
   e.jump = size > 0.0 && !previous.empty()
                ? std::min(1.0, cv::norm(centroid(boundary) - centroid(previous)) / size)

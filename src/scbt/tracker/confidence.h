@@ -46,9 +46,11 @@ struct ConfidenceModel {
 // frame's boundary and the last confident one's descriptor. `gray` is the part of the frame at
 // `gray_origin` (frame coordinates) the tracker looked at; samples outside it count as
 // unsupported. `min_step`: the grey-level step an edge needs (the detector's threshold).
+// `descriptor`, when given, gets shape_descriptor(boundary), which the shape change needs anyway.
 BoundaryEvidence measure_evidence(const Polygon& boundary, double gap_length,
                                   const Polygon& previous, const ShapeDescriptor& reference,
-                                  const cv::Mat& gray, cv::Point gray_origin, double min_step);
+                                  const cv::Mat& gray, cv::Point gray_origin, double min_step,
+                                  ShapeDescriptor* descriptor = nullptr);
 
 struct EdgeSamples {
   double support = 0.0;        // BoundaryEvidence::edge_support

@@ -67,11 +67,12 @@ void LossOptions::check() const {
   view_change.check();
 }
 
-void LossMonitor::add_confident(const Polygon& boundary, double inside_level, double confidence) {
+void LossMonitor::add_confident(const Polygon& boundary, double inside_level, double confidence,
+                                const ShapeDescriptor* descriptor) {
   const int slot = kept_next_;
   Confident& added = kept_[slot];
   added.boundary = boundary;  // reuses the slot's buffer
-  added.descriptor = shape_descriptor(boundary);
+  added.descriptor = descriptor != nullptr ? *descriptor : shape_descriptor(boundary);
   // An unknown level keeps the last known one.
   added.level = inside_level >= 0.0 ? inside_level : last_confident_.level;
   added.confidence = confidence;
@@ -133,7 +134,8 @@ bool LossMonitor::matches(const Polygon& cycle, const BoundaryEvidence& evidence
 }
 
 TrackState LossMonitor::update(const Polygon& boundary, double confidence, bool held,
-                               const BoundaryEvidence& evidence) {
+                               const BoundaryEvidence& evidence,
+                               const ShapeDescriptor* descriptor) {
   const bool miss = held || confidence < options_.miss_confidence;
   const bool confident = confidence >= options_.tracking_confidence &&
                          (!after_cut_ || evidence.shape_change <= options_.match_shape_distance);
@@ -151,7 +153,7 @@ TrackState LossMonitor::update(const Polygon& boundary, double confidence, bool 
   misses_ = 0;
   if (confident) {
     after_cut_ = false;
-    add_confident(boundary, evidence.inside_level, confidence);
+    add_confident(boundary, evidence.inside_level, confidence, descriptor);
     state_ = TrackState::kTracking;
   } else {
     state_ = TrackState::kUncertain;

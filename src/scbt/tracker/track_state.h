@@ -83,9 +83,10 @@ class LossMonitor {
   // `inside_level`: BoundaryEvidence::inside_level of the boundary (-1 unknown).
   void reset(const Polygon& boundary, double inside_level);
   // The state of a frame whose boundary `boundary` was found with `confidence`, or held
-  // (`held`, confidence 0). Records the boundary as confident when it is.
+  // (`held`, confidence 0). Records the boundary as confident when it is. `descriptor`, when
+  // given, is shape_descriptor(boundary) (measure_evidence's): not computed again.
   TrackState update(const Polygon& boundary, double confidence, bool held,
-                    const BoundaryEvidence& evidence);
+                    const BoundaryEvidence& evidence, const ShapeDescriptor* descriptor = nullptr);
   // The object found again while lost: tracking resumes from `boundary`.
   void resume(const Polygon& boundary, double inside_level) { reset(boundary, inside_level); }
   // Whether a cycle found while lost is the object: its shape and inside level match the last
@@ -132,7 +133,8 @@ class LossMonitor {
   // earlier.
   static constexpr int kLag = 4;
 
-  void add_confident(const Polygon& boundary, double inside_level, double confidence);
+  void add_confident(const Polygon& boundary, double inside_level, double confidence,
+                     const ShapeDescriptor* descriptor = nullptr);
   int newest() const { return (kept_next_ + kKept - 1) % kKept; }
 
   LossOptions options_;

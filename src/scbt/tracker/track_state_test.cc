@@ -4,6 +4,10 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
+#include <opencv2/core.hpp>
+#include <random>
 #include <stdexcept>
 
 namespace scbt {
@@ -159,6 +163,55 @@ TEST(LossMonitor, MatchNeedsTheReacquireConfidenceShapeAndLevel) {
   EXPECT_FALSE(monitor.matches(square(200, 60), level(150), 0.95));  // level moved by 50
   const Polygon thin = {{0, 0}, {120, 0}, {120, 20}, {0, 20}};
   EXPECT_FALSE(monitor.matches(thin, level(100), 0.95));
+}
+
+// A boundary of `n` vertices on an ellipse of axes a and b, rotated by `turn`, centred at c.
+Polygon ellipse(int n, double a, double b, double turn, Point c) {
+  Polygon p;
+  for (int i = 0; i < n; ++i) {
+    const double t = 2.0 * CV_PI * i / n;
+    const Point q(a * std::cos(t), b * std::sin(t));
+    p.emplace_back(c.x + q.x * std::cos(turn) - q.y * std::sin(turn),
+                   c.y + q.x * std::sin(turn) + q.y * std::cos(turn));
+  }
+  return p;
+}
+
+TEST(LossMonitor, AGivenDescriptorKeepsWhatComputingItWould) {
+  std::mt19937 random(5);
+  std::uniform_real_distribution<double> axis(20.0, 60.0), turn(0.0, CV_PI), confidence(0.0, 1.0);
+  for (int seed = 0; seed < 10; ++seed) {
+    LossMonitor computing, given;
+    const Polygon first = ellipse(12, axis(random), axis(random), turn(random), {100, 100});
+    computing.reset(first, 100);
+    given.reset(first, 100);
+    for (int frame = 0; frame < 30; ++frame) {
+      const Polygon boundary =
+          ellipse(6 + frame % 7, axis(random), axis(random), turn(random), {100.0 + frame, 100.0});
+      const double c = confidence(random);
+      const bool held = c < 0.1;
+      const ShapeDescriptor descriptor = shape_descriptor(boundary);
+      EXPECT_EQ(computing.update(boundary, c, held, level(100)),
+                given.update(boundary, c, held, level(100), &descriptor));
+      EXPECT_EQ(computing.reference().magnitudes, given.reference().magnitudes);
+      EXPECT_EQ(computing.last_confident(), given.last_confident());
+    }
+  }
+}
+
+TEST(MeasureEvidence, HandsOverTheBoundarysDescriptor) {
+  const cv::Mat gray(200, 200, CV_8UC1, cv::Scalar(90));
+  const Polygon boundary = ellipse(9, 50.0, 30.0, 0.4, {100, 100});
+  const ShapeDescriptor reference = shape_descriptor(ellipse(9, 40.0, 40.0, 0.0, {90, 100}));
+  ShapeDescriptor descriptor;
+  const BoundaryEvidence with =
+      measure_evidence(boundary, 10.0, boundary, reference, gray, {0, 0}, 20.0, &descriptor);
+  const BoundaryEvidence without =
+      measure_evidence(boundary, 10.0, boundary, reference, gray, {0, 0}, 20.0);
+  EXPECT_TRUE(descriptor.valid);
+  EXPECT_EQ(descriptor.magnitudes, shape_descriptor(boundary).magnitudes);
+  EXPECT_EQ(with.shape_change, without.shape_change);
+  EXPECT_EQ(with.shape_change, std::min(1.0, shape_distance(descriptor, reference)));
 }
 
 TEST(LossOptions, CheckRejectsBadValues) {

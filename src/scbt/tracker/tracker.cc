@@ -369,7 +369,7 @@ void Tracker::assess(Attempt* a, const Polygon& previous) const {
   a->assessed = true;
   if (!a->choice) return;
   a->boundary = a->cycles->polygon(a->graph, a->choice->index);
-  a->evidence = evidence_of(*a, a->boundary, previous);
+  a->evidence = evidence_of(*a, a->boundary, previous, &a->descriptor);
   a->confidence = options_.confidence(a->evidence);
 }
 
@@ -452,7 +452,9 @@ TrackResult Tracker::track(const cv::Mat& frame) {
     check_view_cut(frame, result);
     motion_.update_held();
   }
-  result.state = monitor_.update(boundary_, result.confidence, result.held, result.evidence);
+  // A found boundary's descriptor came with its evidence (assess): the monitor needs no other.
+  result.state = monitor_.update(boundary_, result.confidence, result.held, result.evidence,
+                                 result.held ? nullptr : &a->descriptor);
   if (result.state == TrackState::kTracking) {
     keyframes_.offer(frame, boundary_);
     if (options_.shape_weight > 0.0) shape_memory_.remember(boundary_);

@@ -8,6 +8,7 @@
 
 #include "scbt/choice/boundary_choice.h"
 #include "scbt/geometry/polygon.h"
+#include "scbt/geometry/shape_descriptor.h"
 #include "scbt/graph/segment_graph.h"
 #include "scbt/tracker/contrast_profile.h"
 #include "scbt/tracker/cycle_stage.h"
@@ -131,6 +132,7 @@ class Tracker {
     bool assessed = false;
     Polygon boundary;
     BoundaryEvidence evidence;
+    ShapeDescriptor descriptor;  // of boundary
     double confidence = 0.0;
   };
   // `adapt`: with thresholds (and smoothing) adapted to this window (retry_weak). `gate_area`
@@ -185,9 +187,10 @@ class Tracker {
   bool confirmed(const cv::Mat& frame, const Polygon& moved, const Polygon& unmoved);
   static void add_retry_times(const Attempt& retry, TrackResult* result);
   // The evidence (confidence.h) of `chosen`, the cycle attempt `a` chose around `previous`; the
-  // grey window gray_ must still be a's (tracker_lost.cc).
-  BoundaryEvidence evidence_of(const Attempt& a, const Polygon& chosen,
-                               const Polygon& previous) const;
+  // grey window gray_ must still be a's (tracker_lost.cc). `descriptor`, when given, gets the
+  // shape_descriptor of `chosen`.
+  BoundaryEvidence evidence_of(const Attempt& a, const Polygon& chosen, const Polygon& previous,
+                               ShapeDescriptor* descriptor = nullptr) const;
   // On a surprising frame after a tracked one (held, confidence below tracking, or a shape change
   // beyond a match): whether the view was cut (LossOptions::cut_correlation), told to the monitor.
   // Needs the motion reference unchanged (tracker_lost.cc).

@@ -46,10 +46,10 @@ double coarse_view_correlation(const cv::Mat& reference, const cv::Mat& current)
 }  // namespace
 
 BoundaryEvidence Tracker::evidence_of(const Attempt& a, const Polygon& chosen,
-                                      const Polygon& previous) const {
+                                      const Polygon& previous, ShapeDescriptor* descriptor) const {
   const double gap_length = a.choice->cost * a.cycles->area(a.choice->index);
   return measure_evidence(chosen, gap_length, previous, monitor_.reference(), gray_, a.roi.tl(),
-                          min_edge_step(step_threshold_));
+                          min_edge_step(step_threshold_), descriptor);
 }
 
 void Tracker::check_view_cut(const cv::Mat& frame, const TrackResult& result) {
