@@ -23,14 +23,20 @@ bool inside(const cv::Mat& gray, const Point& q) {
   return q.x >= 0.0 && q.y >= 0.0 && q.x <= gray.cols - 1.0 && q.y <= gray.rows - 1.0;
 }
 
-// The spread of the step the profile crosses, or -1 when it crosses none clearly.
-double profile_sigma(const std::array<double, kLength>& profile, double min_step) {
+// The grey-level step the profile crosses: the mean of its kFar samples at the far end less that
+// at the near end.
+double profile_step(const std::array<double, kLength>& profile) {
   double near = 0.0, far = 0.0;
   for (int i = 0; i < kFar; ++i) {
     near += profile[i];
     far += profile[kLength - 1 - i];
   }
-  const double step = (far - near) / kFar;
+  return (far - near) / kFar;
+}
+
+// The spread of the step the profile crosses, or -1 when it crosses none clearly.
+double profile_sigma(const std::array<double, kLength>& profile, double min_step) {
+  const double step = profile_step(profile);
   if (!(std::abs(step) >= min_step)) return -1.0;
   const double sign = step > 0.0 ? 1.0 : -1.0;
   std::array<double, kLength - 2> slope;
@@ -86,8 +92,9 @@ double estimate_edge_blur(const cv::Mat& gray, cv::Point window_tl, const Polygo
     // The points read lie within sqrt(kReach^2 + 1) px of p: when a wider disc is inside the
     // image, none needs checking or clamping.
     const bool all_inside = sampler.holds_disc(p, kReach + 1.0);
-    // profile[k] is kReach - k px along the normal; the step's sign does not matter.
-    for (int k = 0; k < kLength; ++k) {
+    // profile[k], kReach - k px along the normal (the step's sign does not matter): false when a
+    // point is outside the image.
+    const auto read = [&](int k) {
       const Point across = p + normal * static_cast<double>(kReach - k);
       double sum = 0.0;
       for (int lane = -1; lane <= 1; ++lane) {
@@ -95,11 +102,20 @@ double estimate_edge_blur(const cv::Mat& gray, cv::Point window_tl, const Polygo
         if (all_inside) {
           sum += sampler.inside(q.x, q.y);
         } else {
-          if (!inside(gray, q)) return;
+          if (!inside(gray, q)) return false;
           sum += sampler.clamped(q.x, q.y);
         }
       }
       profile[k] = sum / 3.0;
+      return true;
+    };
+    // The ends first: where they differ by less than a clear step, the middle is not read.
+    for (int k = 0; k < kFar; ++k) {
+      if (!read(k) || !read(kLength - 1 - k)) return;
+    }
+    if (!(std::abs(profile_step(profile)) >= min_step)) return;
+    for (int k = kFar; k < kLength - kFar; ++k) {
+      if (!read(k)) return;
     }
     const double sigma = profile_sigma(profile, min_step);
     if (sigma > 0.0) sigmas.push_back(sigma);
