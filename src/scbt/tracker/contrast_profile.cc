@@ -1,5 +1,6 @@
 #include "scbt/tracker/contrast_profile.h"
 
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <stdexcept>
@@ -8,16 +9,30 @@
 namespace scbt {
 namespace {
 
+// weighted[c][v]: the grey weight of channel c (B, G, R: ITU-R BT.601) times level v, the product
+// the grey level sums, looked up rather than multiplied (a box is read on every tracked frame).
+struct ChannelWeights {
+  std::array<std::array<double, 256>, 3> weighted;
+  ChannelWeights() {
+    const double weight[3] = {0.114, 0.587, 0.299};
+    for (int c = 0; c < 3; ++c) {
+      for (int v = 0; v < 256; ++v) weighted[c][v] = weight[c] * v;
+    }
+  }
+};
+
 // Mean grey level of the (2 r + 1)^2 box centred on pixel (x, y); false if it leaves the image.
 bool box_mean(const cv::Mat& image, int x, int y, int r, double* mean) {
   if (x - r < 0 || y - r < 0 || x + r >= image.cols || y + r >= image.rows) return false;
+  static const ChannelWeights weights;
+  const auto& [blue, green, red] = weights.weighted;
   const int channels = image.channels();
   double sum = 0.0;
   for (int yy = y - r; yy <= y + r; ++yy) {
     const std::uint8_t* row = image.ptr<std::uint8_t>(yy);
     for (int xx = x - r; xx <= x + r; ++xx) {
       const std::uint8_t* p = row + static_cast<size_t>(xx) * channels;
-      sum += channels == 1 ? p[0] : 0.114 * p[0] + 0.587 * p[1] + 0.299 * p[2];
+      sum += channels == 1 ? p[0] : blue[p[0]] + green[p[1]] + red[p[2]];
     }
   }
   *mean = sum / ((2 * r + 1) * (2 * r + 1));

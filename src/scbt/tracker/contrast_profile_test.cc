@@ -46,6 +46,32 @@ TEST(ContrastProfile, ColourIsReadAsGrey) {
   for (size_t i = 0; i < grey.size(); ++i) EXPECT_NEAR(grey[i], colour[i], 1.0);
 }
 
+TEST(ContrastProfile, ColourIsWeightedByBT601) {
+  // Two colours, one inside a rectangle and one around it, read one pixel at a time (no
+  // smoothing): each sample is the difference of their grey levels, or 0 where both reads fall on
+  // one side (at the corners).
+  cv::RNG rng(11);
+  for (int trial = 0; trial < 20; ++trial) {
+    const cv::Vec3b a(rng.uniform(0, 256), rng.uniform(0, 256), rng.uniform(0, 256));
+    const cv::Vec3b b(rng.uniform(0, 256), rng.uniform(0, 256), rng.uniform(0, 256));
+    cv::Mat image(100, 100, CV_8UC3, cv::Scalar(a[0], a[1], a[2]));
+    image(cv::Rect(30, 20, 40, 60)).setTo(cv::Scalar(b[0], b[1], b[2]));
+    const auto grey = [](const cv::Vec3b& c) { return 0.114 * c[0] + 0.587 * c[1] + 0.299 * c[2]; };
+    const float step = static_cast<float>(grey(a) - grey(b));
+    ContrastProfileOptions options;
+    options.smoothing = 0;
+    std::vector<float> profile;
+    contrast_profile(image, {{29.5, 19.5}, {69.5, 19.5}, {69.5, 79.5}, {29.5, 79.5}}, options,
+                     &profile);
+    int across = 0;
+    for (float v : profile) {
+      EXPECT_TRUE(v == 0.0f || v == step || v == -step) << v << " vs " << step;
+      across += v != 0.0f || step == 0.0f ? 1 : 0;
+    }
+    EXPECT_GT(across, 48);
+  }
+}
+
 TEST(BoundaryAppearance, PrefersThePlacementWhereTheBoundaryMovedTo) {
   BoundaryAppearance appearance;
   appearance.remember(scene({100, 100}), square({100, 100}, 30.5));
