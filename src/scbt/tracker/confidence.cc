@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "scbt/geometry/pixel_round.h"
+
 namespace scbt {
 namespace {
 
@@ -47,10 +49,8 @@ EdgeSamples sample_edges(const Polygon& boundary, const cv::Mat& gray, cv::Point
     const Point normal(-direction.y, direction.x);
     const Point left = p + normal * kSideOffset - Point(gray_origin);
     const Point right = p - normal * kSideOffset - Point(gray_origin);
-    const int lx = static_cast<int>(std::lround(left.x)),
-              ly = static_cast<int>(std::lround(left.y));
-    const int rx = static_cast<int>(std::lround(right.x)),
-              ry = static_cast<int>(std::lround(right.y));
+    const int lx = round_to_pixel(left.x), ly = round_to_pixel(left.y);
+    const int rx = round_to_pixel(right.x), ry = round_to_pixel(right.y);
     if (lx < 0 || ly < 0 || rx < 0 || ry < 0 || lx >= gray.cols || rx >= gray.cols ||
         ly >= gray.rows || ry >= gray.rows) {
       continue;

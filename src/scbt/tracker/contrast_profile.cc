@@ -6,6 +6,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "scbt/geometry/pixel_round.h"
+
 namespace scbt {
 namespace {
 
@@ -78,10 +80,9 @@ void contrast_profile(const cv::Mat& image, const Polygon& boundary,
       const Point p = a + t * (along - edge_start);
       const Point out = p + normal * options.across, in = p - normal * options.across;
       double outside = 0.0, inside = 0.0;
-      if (box_mean(image, static_cast<int>(std::lround(out.x)),
-                   static_cast<int>(std::lround(out.y)), options.smoothing, &outside) &&
-          box_mean(image, static_cast<int>(std::lround(in.x)), static_cast<int>(std::lround(in.y)),
-                   options.smoothing, &inside)) {
+      if (box_mean(image, round_to_pixel(out.x), round_to_pixel(out.y), options.smoothing,
+                   &outside) &&
+          box_mean(image, round_to_pixel(in.x), round_to_pixel(in.y), options.smoothing, &inside)) {
         (*profile)[k] = static_cast<float>(outside - inside);
       }
     }
