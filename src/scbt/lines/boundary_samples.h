@@ -12,6 +12,15 @@
 
 namespace scbt {
 
+// The grey levels 0..255 as doubles, read by GreySampler rather than converted one by one.
+struct GreyLevels {
+  double value[256];
+  constexpr GreyLevels() : value() {
+    for (int v = 0; v < 256; ++v) value[v] = v;
+  }
+};
+inline constexpr GreyLevels kGreyLevels{};
+
 // Bilinear samples of an 8-bit grey image, its rows and size read out of the cv::Mat once: the
 // measurements read thousands of points per frame.
 class GreySampler {
@@ -32,8 +41,12 @@ class GreySampler {
     const double fx = x - x0, fy = y - y0;
     const std::uint8_t* r0 = data_ + static_cast<size_t>(y0) * step_ + x0;
     const std::uint8_t* r1 = r0 + step_;
-    const double top = r0[0] + fx * (r0[1] - r0[0]);
-    const double bottom = r1[0] + fx * (r1[1] - r1[0]);
+    // Levels read from a table rather than converted: their differences are exact in double, so
+    // each sample is what integer differences gave.
+    const double* level = kGreyLevels.value;
+    const double a = level[r0[0]], b = level[r0[1]], c = level[r1[0]], d = level[r1[1]];
+    const double top = a + fx * (b - a);
+    const double bottom = c + fx * (d - c);
     return top + fy * (bottom - top);
   }
   // Whether every point within `radius` of p is one the clamp leaves alone.
