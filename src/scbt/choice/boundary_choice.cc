@@ -65,8 +65,9 @@ double StableChooser::shape_factor(const SegmentGraph& graph, const RankingWeigh
   outline_.clear();
   for (int i = 0; i < n; ++i) outline_.push_back(graph.vertices[cycle_[(start + i) % n]]);
   if (signed_area(outline_) < 0.0) std::reverse(outline_.begin() + 1, outline_.end());
-  const double change =
-      std::min(1.0, shape_distance(affine_shape_descriptor(outline_), *weights.shape_reference));
+  const double distance =
+      shape_distance(affine_shape_descriptor(outline_), *weights.shape_reference);
+  const double change = std::clamp(distance - weights.shape_noise, 0.0, 1.0);
   return std::exp(weights.shape_weight * change);
 }
 

@@ -50,9 +50,15 @@ struct RankingWeights {
   // S^k takes part of that back for any change of area.
   double similarity_exponent = 0.0;
   // w: and by exp(w d), d the shape_distance of their affine shape (affine_shape_descriptor) to
-  // `shape_reference` (at most 1). 0, or no valid reference, leaves the ranking to Γ / S^k.
+  // `shape_reference` less `shape_noise` (within 0 and 1). 0, or no valid reference, leaves the
+  // ranking to Γ / S^k.
   double shape_weight = 0.0;
   const ShapeDescriptor* shape_reference = nullptr;
+  // The distance that is the descriptor's own jitter, not a change of shape: the dataset's
+  // ground-truth outlines lie 0.001-0.005 from their remembered shape (ShapeMemory) in the median,
+  // at most 0.012 in 9 frames of 10. Below it the ranking is Γ / S^k's, so that the weight reorders
+  // only clear changes of shape, not the near ties among outlines of one shape.
+  double shape_noise = 0.02;
 };
 
 // The stabilised choice with its buffers and distance cache kept across frames, over any list
@@ -99,11 +105,11 @@ class StableChooser {
   std::vector<int> cycle_edges_;  // per entry of cycles_, the edge ending there (edge_between)
   std::vector<int> cycle_;
   BoundaryDistanceCache cache_;
-  // The candidates within the bound, one per cycle, with their weighted cost.
+  // The distinct cycles within the bound, with their cost (weighted once weighed).
   struct Weighed {
-    int index, rank;
+    int index, rank;  // rank: position in (area, gap) order
     double cost;
-    int begin, end;  // its cycle in `weighed_cycles_`
+    int begin, end;  // its cycle in `weighed_cycles_`, once weighed
   };
   std::vector<Weighed> weighed_;
   std::vector<int> weighed_cycles_;
@@ -166,28 +172,43 @@ std::optional<BoundaryChoice> StableChooser::choose(
   std::sort(order_.begin(), order_.end(), [](const Keyed& a, const Keyed& b) {
     return a.area < b.area || (a.area == b.area && a.gap_length < b.gap_length);
   });
+  // The distinct cycles, cheapest first: a weighted cost is at least the cost, so once a cost
+  // exceeds (1 + tolerance) times the least weighted cost so far, neither it nor any dearer one can
+  // tie, and their shapes need not be described.
   weighed_.clear();
-  weighed_cycles_.clear();
-  double least = std::numeric_limits<double>::infinity();
-  int least_index = best.index;
   for (size_t k = 0; k < order_.size(); ++k) {
     const Keyed& c = order_[k];
     if (k > 0) {
       const Keyed& before = order_[k - 1];
       if (before.area == c.area && before.gap_length == c.gap_length) continue;
     }
-    list_vertices(c.index, &cycle_);
-    double cost = admissible_cost_[c.index];
-    if (weigh_shape) cost *= shape_factor(graph, weights);
-    weighed_.push_back(
-        {c.index, static_cast<int>(k), cost, static_cast<int>(weighed_cycles_.size()), 0});
+    weighed_.push_back({c.index, static_cast<int>(k), admissible_cost_[c.index], 0, 0});
+  }
+  if (weigh_shape) {
+    std::sort(weighed_.begin(), weighed_.end(), [](const Weighed& a, const Weighed& b) {
+      return a.cost < b.cost || (a.cost == b.cost && a.rank < b.rank);
+    });
+  }
+  weighed_cycles_.clear();
+  double least = std::numeric_limits<double>::infinity();
+  int least_index = best.index, least_rank = 0;
+  size_t num_weighed = 0;
+  for (; num_weighed < weighed_.size(); ++num_weighed) {
+    Weighed& w = weighed_[num_weighed];
+    if (weigh_shape && w.cost > least * (1.0 + tolerance)) break;
+    list_vertices(w.index, &cycle_);
+    if (weigh_shape) w.cost *= shape_factor(graph, weights);
+    w.begin = static_cast<int>(weighed_cycles_.size());
     weighed_cycles_.insert(weighed_cycles_.end(), cycle_.begin(), cycle_.end());
-    weighed_.back().end = static_cast<int>(weighed_cycles_.size());
-    if (cost < least) {
-      least = cost;
-      least_index = c.index;
+    w.end = static_cast<int>(weighed_cycles_.size());
+    // Equal weighted costs: the earlier in (area, gap) order, as a scan in that order would.
+    if (w.cost < least || (w.cost == least && w.rank < least_rank)) {
+      least = w.cost;
+      least_index = w.index;
+      least_rank = w.rank;
     }
   }
+  weighed_.resize(num_weighed);
   near_ties_.clear();
   cycles_.clear();
   cache_.reset(graph, previous, known);

@@ -278,6 +278,10 @@ TEST(ChooseBoundaryStable, ShapeWeightStopsALeakThroughOneStretch) {
   const ShapeDescriptor none;
   EXPECT_EQ(choose(made, {0.5, 4.0, &none})->index, 1);
   EXPECT_EQ(choose(made, {0.5, 4.0, nullptr})->index, 1);
+  // A change of shape within the descriptor's noise does not count.
+  const double leak_distance = shape_distance(affine_shape_descriptor(leak), reference);
+  ASSERT_GT(leak_distance, RankingWeights().shape_noise);
+  EXPECT_EQ(choose(made, {0.5, 4.0, &reference, leak_distance + 0.01})->index, 1);
 
   // The rim foreshortened by 8 % (the same area within the gate), cheaper: taken either way.
   Polygon oblique;
@@ -408,10 +412,11 @@ std::optional<BoundaryChoice> reference_weighted_choice(
     const CycleCandidate& c = candidates[i];
     const double s = area_similarity(previous_area, c.area);
     if (!(s > min_similarity)) continue;
-    const double d = std::min(
-        1.0,
+    const double d = std::clamp(
         shape_distance(affine_shape_descriptor(from_lowest_vertex(candidate_polygon(graph, c))),
-                       *weights.shape_reference));
+                       *weights.shape_reference) -
+            weights.shape_noise,
+        0.0, 1.0);
     cost[i] = grouping_cost(c.gap_length, c.area) / std::pow(s, weights.similarity_exponent) *
               std::exp(weights.shape_weight * d);
     least = std::min(least, cost[i]);

@@ -29,7 +29,8 @@ struct TrackerOptions {
   // a low frame rate taking in some of the background) wins frame after frame. Not while lost.
   double similarity_exponent = 0.5;
   // Candidates are also ranked by exp(w d), w this weight and d their affine shape's distance to
-  // the one remembered over the confident frames (ShapeMemory, RankingWeights); 0 is off. A rim
+  // the one remembered over the confident frames beyond the descriptor's jitter (ShapeMemory,
+  // RankingWeights::shape_noise); 0 is off. A rim
   // whose edge fades against a background of its colour (blur, low contrast) leaks into that
   // background a little each frame, too little to notice against the frame before; the outline's
   // shape drifts from what it was while the object's own hardly changes. Not while lost.
