@@ -154,9 +154,11 @@ std::optional<BoundaryChoice> StableChooser::choose(
   // A weighted cost is at least the cost, and the least weighted cost at most the best's: no
   // candidate dearer than (1 + tolerance) times the best's weighted cost can tie.
   double bound = best.cost * (1.0 + tolerance);
+  double best_factor = 1.0;
   if (weigh_shape) {
     list_vertices(best.index, &cycle_);
-    bound *= shape_factor(graph, weights);
+    best_factor = shape_factor(graph, weights);
+    bound *= best_factor;
   }
 
   order_.clear();
@@ -197,7 +199,7 @@ std::optional<BoundaryChoice> StableChooser::choose(
     Weighed& w = weighed_[num_weighed];
     if (weigh_shape && w.cost > least * (1.0 + tolerance)) break;
     list_vertices(w.index, &cycle_);
-    if (weigh_shape) w.cost *= shape_factor(graph, weights);
+    if (weigh_shape) w.cost *= w.index == best.index ? best_factor : shape_factor(graph, weights);
     w.begin = static_cast<int>(weighed_cycles_.size());
     weighed_cycles_.insert(weighed_cycles_.end(), cycle_.begin(), cycle_.end());
     w.end = static_cast<int>(weighed_cycles_.size());

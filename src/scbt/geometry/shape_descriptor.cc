@@ -10,14 +10,18 @@ constexpr double kPi = 3.14159265358979323846;
 constexpr int kN = ShapeDescriptor::kSamples;
 constexpr int kK = ShapeDescriptor::kHarmonics;
 
-// cos and sin of 2 pi k i / N, computed once.
+// cos and sin of 2 pi k i / N for harmonics k = 1..kK, computed once, indexed [i][k - 1] so that
+// the sums over i run for all harmonics at once.
 struct Twiddles {
-  double cos_table[kN];
-  double sin_table[kN];
+  double cos_table[kN][kK];
+  double sin_table[kN][kK];
   Twiddles() {
     for (int i = 0; i < kN; ++i) {
-      cos_table[i] = std::cos(2.0 * kPi * i / kN);
-      sin_table[i] = std::sin(2.0 * kPi * i / kN);
+      for (int k = 1; k <= kK; ++k) {
+        const int phase = (k * i) % kN;
+        cos_table[i][k - 1] = std::cos(2.0 * kPi * phase / kN);
+        sin_table[i][k - 1] = std::sin(2.0 * kPi * phase / kN);
+      }
     }
   }
 };
@@ -54,16 +58,17 @@ ShapeDescriptor shape_descriptor(const Polygon& polygon) {
   mean /= kN;
   if (!(mean > 0.0)) return descriptor;
 
+  // Each harmonic's sums taken over i in order, all harmonics side by side (independent sums the
+  // compiler can put in vector lanes; the same additions in the same order as one at a time).
   static const Twiddles twiddles;
-  for (int k = 1; k <= kK; ++k) {
-    double re = 0.0, im = 0.0;
-    for (int i = 0; i < kN; ++i) {
-      const int phase = (k * i) % kN;
-      re += r[i] * twiddles.cos_table[phase];
-      im -= r[i] * twiddles.sin_table[phase];
+  double re[kK] = {}, im[kK] = {};
+  for (int i = 0; i < kN; ++i) {
+    for (int k = 0; k < kK; ++k) {
+      re[k] += r[i] * twiddles.cos_table[i][k];
+      im[k] -= r[i] * twiddles.sin_table[i][k];
     }
-    descriptor.magnitudes[k - 1] = std::hypot(re, im) / (kN * mean);
   }
+  for (int k = 0; k < kK; ++k) descriptor.magnitudes[k] = std::hypot(re[k], im[k]) / (kN * mean);
   descriptor.valid = true;
   return descriptor;
 }
