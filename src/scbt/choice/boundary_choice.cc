@@ -25,32 +25,6 @@ std::optional<BoundaryChoice> choose_boundary(const std::vector<CycleCandidate>&
   return best;
 }
 
-int StableChooser::closest_near_tie() {
-  // The boundary distance is the larger of two means, so the cheap one (cycle -> previous,
-  // cached per vertex and edge) bounds it from below: candidates are visited by that bound and
-  // the expensive direction is computed only while the bound can still win.
-  std::sort(near_ties_.begin(), near_ties_.end(), [](const NearTie& l, const NearTie& r) {
-    return l.from_distance < r.from_distance ||
-           (l.from_distance == r.from_distance && l.rank < r.rank);
-  });
-  double best_distance = std::numeric_limits<double>::infinity();
-  int best_rank = std::numeric_limits<int>::max(), best_index = -1;
-  for (const NearTie& tie : near_ties_) {
-    if (tie.from_distance > best_distance) break;
-    cycle_.assign(cycles_.begin() + tie.begin, cycles_.begin() + tie.end);
-    const double distance = std::max(
-        tie.from_distance, cache_.mean_distance_to_cycle(cycle_, &cycle_edges_[tie.begin]));
-    // Equal distances go to the earlier in (area, gap) order, as a scan in that order would.
-    if (distance < best_distance ||
-        (distance == best_distance && std::isfinite(distance) && tie.rank < best_rank)) {
-      best_distance = distance;
-      best_rank = tie.rank;
-      best_index = tie.index;
-    }
-  }
-  return best_index;
-}
-
 double StableChooser::shape_factor(const SegmentGraph& graph, const RankingWeights& weights) {
   // The descriptor samples the outline from its first vertex: one cycle closed from different
   // seeds (another start or direction) is described from one start and direction, so that it is

@@ -87,9 +87,11 @@ class StableChooser {
     double from_distance;  // cycle -> previous, a lower bound of the boundary distance
     int begin, end;        // its cycle in `cycles_`
   };
-  // Picks among near_ties_ (filled, cycles listed, from_distance set); returns the candidate
-  // index, -1 if no distance is finite.
-  int closest_near_tie();
+  // Picks among the near_ties_ (filled, cycles listed, from_distance set) that `accepts(tie)`
+  // (called with the tie's cycle in cycle_, only for those whose distance could still win);
+  // returns the candidate index, -1 if no accepted distance is finite.
+  template <class Accepts>
+  int closest_near_tie(Accepts&& accepts);
   // exp(w d) for cycle_ (RankingWeights::shape_weight).
   double shape_factor(const SegmentGraph& graph, const RankingWeights& weights);
 
@@ -160,6 +162,12 @@ std::optional<BoundaryChoice> StableChooser::choose(
     best_factor = shape_factor(graph, weights);
     bound *= best_factor;
   }
+  // The best's shape within the jitter (the usual case): the least weighted cost is its cost, and
+  // a candidate ties when its cost times its factor is within (1 + tolerance) of it, which needs
+  // its factor only once the distance order reaches it. Otherwise every cycle that could tie is
+  // weighed first.
+  const bool weigh_lazily = weigh_shape && best_factor == 1.0;
+  const bool weigh_first = weigh_shape && !weigh_lazily;
 
   order_.clear();
   for (int i = 0; i < static_cast<int>(candidates.size()); ++i) {
@@ -186,7 +194,7 @@ std::optional<BoundaryChoice> StableChooser::choose(
     }
     weighed_.push_back({c.index, static_cast<int>(k), admissible_cost_[c.index], 0, 0});
   }
-  if (weigh_shape) {
+  if (weigh_first) {
     std::sort(weighed_.begin(), weighed_.end(), [](const Weighed& a, const Weighed& b) {
       return a.cost < b.cost || (a.cost == b.cost && a.rank < b.rank);
     });
@@ -197,9 +205,9 @@ std::optional<BoundaryChoice> StableChooser::choose(
   size_t num_weighed = 0;
   for (; num_weighed < weighed_.size(); ++num_weighed) {
     Weighed& w = weighed_[num_weighed];
-    if (weigh_shape && w.cost > least * (1.0 + tolerance)) break;
+    if (weigh_first && w.cost > least * (1.0 + tolerance)) break;
     list_vertices(w.index, &cycle_);
-    if (weigh_shape) w.cost *= w.index == best.index ? best_factor : shape_factor(graph, weights);
+    if (weigh_first) w.cost *= w.index == best.index ? best_factor : shape_factor(graph, weights);
     w.begin = static_cast<int>(weighed_cycles_.size());
     weighed_cycles_.insert(weighed_cycles_.end(), cycle_.begin(), cycle_.end());
     w.end = static_cast<int>(weighed_cycles_.size());
@@ -225,16 +233,59 @@ std::optional<BoundaryChoice> StableChooser::choose(
     tie.end = static_cast<int>(cycles_.size());
     near_ties_.push_back(tie);
   }
-  const int closest = closest_near_tie();
+  const double tie_bound = least * (1.0 + tolerance);
+  const int closest = weigh_lazily ? closest_near_tie([&](const NearTie& tie) {
+    return admissible_cost_[tie.index] * shape_factor(graph, weights) <= tie_bound;
+  })
+                                   : closest_near_tie([](const NearTie&) { return true; });
   if (closest >= 0) {
     best.index = closest;
-  } else if (weigh_shape) {
+  } else if (weigh_first) {
     best.index = least_index;
+  } else if (weigh_lazily) {
+    // No finite distance (rare): the least weighted cost, the earlier in (area, gap) order.
+    double least_weighted = std::numeric_limits<double>::infinity();
+    for (const Weighed& w : weighed_) {
+      cycle_.assign(weighed_cycles_.begin() + w.begin, weighed_cycles_.begin() + w.end);
+      const double cost = w.cost * shape_factor(graph, weights);
+      if (cost < least_weighted) {
+        least_weighted = cost;
+        best.index = w.index;
+      }
+    }
   }
   const Candidate& chosen = candidates[best.index];
   best.cost = grouping_cost(chosen.gap_length, chosen.area);
   best.similarity = area_similarity(previous_area, chosen.area);
   return best;
+}
+
+template <class Accepts>
+int StableChooser::closest_near_tie(Accepts&& accepts) {
+  // The boundary distance is the larger of two means, so the cheap one (cycle -> previous,
+  // cached per vertex and edge) bounds it from below: candidates are visited by that bound and
+  // the expensive direction is computed only while the bound can still win.
+  std::sort(near_ties_.begin(), near_ties_.end(), [](const NearTie& l, const NearTie& r) {
+    return l.from_distance < r.from_distance ||
+           (l.from_distance == r.from_distance && l.rank < r.rank);
+  });
+  double best_distance = std::numeric_limits<double>::infinity();
+  int best_rank = std::numeric_limits<int>::max(), best_index = -1;
+  for (const NearTie& tie : near_ties_) {
+    if (tie.from_distance > best_distance) break;
+    cycle_.assign(cycles_.begin() + tie.begin, cycles_.begin() + tie.end);
+    if (!accepts(tie)) continue;
+    const double distance = std::max(
+        tie.from_distance, cache_.mean_distance_to_cycle(cycle_, &cycle_edges_[tie.begin]));
+    // Equal distances go to the earlier in (area, gap) order, as a scan in that order would.
+    if (distance < best_distance ||
+        (distance == best_distance && std::isfinite(distance) && tie.rank < best_rank)) {
+      best_distance = distance;
+      best_rank = tie.rank;
+      best_index = tie.index;
+    }
+  }
+  return best_index;
 }
 
 }  // namespace scbt

@@ -293,6 +293,29 @@ TEST(ChooseBoundaryStable, ShapeWeightStopsALeakThroughOneStretch) {
   EXPECT_EQ(choose(tilted, {0.5, 4.0, &reference})->index, 1);
 }
 
+// The usual case: the cheapest candidate keeps the remembered shape (its factor 1), and a near tie
+// of another shape, closer to the previous boundary, is no longer a tie once weighed.
+TEST(ChooseBoundaryStable, ShapeWeightDropsANearTieOfAnotherShape) {
+  const Polygon kept = regular(24, Point(300, 240), 80.0);
+  Polygon leak = kept;  // a spike into the background
+  leak[0] = Point(300, 240) + (leak[0] - Point(300, 240)) * 1.8;
+  const double gap = 12.0;
+  HandMade made;
+  made.add(kept, gap);
+  made.add(leak, gap * 1.05 * area(leak) / area(kept));  // 5 % dearer: a near tie
+  const ShapeDescriptor reference = affine_shape_descriptor(kept);
+  ASSERT_GT(shape_distance(affine_shape_descriptor(leak), reference), 0.06);
+  auto choose = [&](const RankingWeights& weights) {
+    StableChooser chooser;
+    // The previous boundary is the leak's: the closest of the near ties.
+    return chooser.choose(
+        made.candidates, [&](int i, std::vector<int>* out) { *out = made.candidates[i].vertices; },
+        made.graph, leak, 0.9, 0.1, nullptr, 0.0, weights);
+  };
+  EXPECT_EQ(choose({0.5})->index, 1);
+  EXPECT_EQ(choose({0.5, 4.0, &reference})->index, 0);
+}
+
 TEST(BoundaryDistance, IdentitySymmetryAndTranslation) {
   std::mt19937 rng(77);
   std::uniform_real_distribution<double> pos(-100.0, 100.0), radius(5.0, 60.0), angle(-kPi, kPi),
@@ -469,19 +492,25 @@ TEST_P(StableChooserProperty, PicksWhatThePlainScanPicks) {
     EXPECT_EQ(expected->num_admissible, got->num_admissible);
     EXPECT_EQ(choose_boundary_stable(candidates, graph, previous, 0.5, tol)->index, got->index);
 
-    // With the ranking weighted (tolerance > 0: the weights act through the near-tie pass).
+    // With the ranking weighted (tolerance > 0: the weights act through the near-tie pass); the
+    // shape noise 0 weighs every cycle that could tie first, 1 weighs them as the distance order
+    // reaches them (the best's factor is then 1), 0.02 either.
     const ShapeDescriptor reference = affine_shape_descriptor(outline);
-    const RankingWeights weights{0.5, 4.0, &reference};
-    const double weighed_tol = std::max(tol, 0.01);
-    const auto weighed_expected =
-        reference_weighted_choice(candidates, graph, previous, 0.5, weighed_tol, weights);
-    const auto weighed = chooser.choose(
-        candidates, [&](int i, std::vector<int>* out) { *out = candidates[i].vertices; }, graph,
-        previous, 0.5, weighed_tol, nullptr, 0.0, weights);
-    ASSERT_EQ(weighed_expected.has_value(), weighed.has_value());
-    EXPECT_NEAR(
-        boundary_distance(candidate_polygon(graph, candidates[weighed_expected->index]), previous),
-        boundary_distance(candidate_polygon(graph, candidates[weighed->index]), previous), 1e-9);
+    for (const double noise : {0.0, 0.02, 1.0}) {
+      const RankingWeights weights{0.5, 4.0, &reference, noise};
+      const double weighed_tol = std::max(tol, 0.01);
+      const auto weighed_expected =
+          reference_weighted_choice(candidates, graph, previous, 0.5, weighed_tol, weights);
+      const auto weighed = chooser.choose(
+          candidates, [&](int i, std::vector<int>* out) { *out = candidates[i].vertices; }, graph,
+          previous, 0.5, weighed_tol, nullptr, 0.0, weights);
+      ASSERT_EQ(weighed_expected.has_value(), weighed.has_value());
+      EXPECT_NEAR(boundary_distance(candidate_polygon(graph, candidates[weighed_expected->index]),
+                                    previous),
+                  boundary_distance(candidate_polygon(graph, candidates[weighed->index]), previous),
+                  1e-9)
+          << "shape noise " << noise;
+    }
   }
 }
 
