@@ -111,10 +111,8 @@ class StableChooser {
   struct Weighed {
     int index, rank;  // rank: position in (area, gap) order
     double cost;
-    int begin, end;  // its cycle in `weighed_cycles_`, once weighed
   };
   std::vector<Weighed> weighed_;
-  std::vector<int> weighed_cycles_;
   Polygon outline_;  // shape_factor's
 };
 
@@ -192,25 +190,23 @@ std::optional<BoundaryChoice> StableChooser::choose(
       const Keyed& before = order_[k - 1];
       if (before.area == c.area && before.gap_length == c.gap_length) continue;
     }
-    weighed_.push_back({c.index, static_cast<int>(k), admissible_cost_[c.index], 0, 0});
+    weighed_.push_back({c.index, static_cast<int>(k), admissible_cost_[c.index]});
   }
   if (weigh_first) {
     std::sort(weighed_.begin(), weighed_.end(), [](const Weighed& a, const Weighed& b) {
       return a.cost < b.cost || (a.cost == b.cost && a.rank < b.rank);
     });
   }
-  weighed_cycles_.clear();
   double least = std::numeric_limits<double>::infinity();
   int least_index = best.index, least_rank = 0;
   size_t num_weighed = 0;
   for (; num_weighed < weighed_.size(); ++num_weighed) {
     Weighed& w = weighed_[num_weighed];
-    if (weigh_first && w.cost > least * (1.0 + tolerance)) break;
-    list_vertices(w.index, &cycle_);
-    if (weigh_first) w.cost *= w.index == best.index ? best_factor : shape_factor(graph, weights);
-    w.begin = static_cast<int>(weighed_cycles_.size());
-    weighed_cycles_.insert(weighed_cycles_.end(), cycle_.begin(), cycle_.end());
-    w.end = static_cast<int>(weighed_cycles_.size());
+    if (weigh_first) {
+      if (w.cost > least * (1.0 + tolerance)) break;
+      list_vertices(w.index, &cycle_);
+      w.cost *= w.index == best.index ? best_factor : shape_factor(graph, weights);
+    }
     // Equal weighted costs: the earlier in (area, gap) order, as a scan in that order would.
     if (w.cost < least || (w.cost == least && w.rank < least_rank)) {
       least = w.cost;
@@ -225,7 +221,7 @@ std::optional<BoundaryChoice> StableChooser::choose(
   cycle_edges_.clear();
   for (const Weighed& w : weighed_) {
     if (!(w.cost <= least * (1.0 + tolerance))) continue;
-    cycle_.assign(weighed_cycles_.begin() + w.begin, weighed_cycles_.begin() + w.end);
+    list_vertices(w.index, &cycle_);
     // The cycle's edges are found once, here, and kept for the other direction.
     NearTie tie{w.index, w.rank, cache_.mean_distance_from_cycle(cycle_, &cycle_edges_),
                 static_cast<int>(cycles_.size()), 0};
@@ -243,14 +239,17 @@ std::optional<BoundaryChoice> StableChooser::choose(
   } else if (weigh_first) {
     best.index = least_index;
   } else if (weigh_lazily) {
-    // No finite distance (rare): the least weighted cost, the earlier in (area, gap) order.
+    // No finite distance (rare): the least weighted cost, the earlier in (area, gap) order. (Here
+    // every distinct cycle is a near tie, its cycle listed in cycles_.)
     double least_weighted = std::numeric_limits<double>::infinity();
-    for (const Weighed& w : weighed_) {
-      cycle_.assign(weighed_cycles_.begin() + w.begin, weighed_cycles_.begin() + w.end);
-      const double cost = w.cost * shape_factor(graph, weights);
-      if (cost < least_weighted) {
+    int least_weighted_rank = 0;
+    for (const NearTie& tie : near_ties_) {
+      cycle_.assign(cycles_.begin() + tie.begin, cycles_.begin() + tie.end);
+      const double cost = admissible_cost_[tie.index] * shape_factor(graph, weights);
+      if (cost < least_weighted || (cost == least_weighted && tie.rank < least_weighted_rank)) {
         least_weighted = cost;
-        best.index = w.index;
+        least_weighted_rank = tie.rank;
+        best.index = tie.index;
       }
     }
   }
