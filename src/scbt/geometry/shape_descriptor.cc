@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <limits>
+#include <vector>
 
 namespace scbt {
 namespace {
@@ -26,33 +27,58 @@ struct Twiddles {
   }
 };
 
-}  // namespace
-
-ShapeDescriptor shape_descriptor(const Polygon& polygon) {
+// The descriptor of the closed polygon p[0..n). One pass takes the sums of area(), perimeter() and
+// centroid() (each added in their order, so each equals theirs to the bit) and keeps the edge
+// lengths for the sampling; `lengths` is scratch space.
+ShapeDescriptor describe(const Point* p, size_t n, std::vector<double>* lengths) {
   ShapeDescriptor descriptor;
-  const size_t n = polygon.size();
-  if (n < 3 || !(area(polygon) > 0.0)) return descriptor;
-  const double length = perimeter(polygon);
+  if (n < 3) return descriptor;
+  // lengths[e]: |p[e + 1] - p[e]| (edge n - 1 closing at p[0]); norm(a - b) == norm(b - a).
+  lengths->resize(n);
+  double* const edge_lengths = lengths->data();
+  double twice_area = 0.0, length = 0.0, cx = 0.0, cy = 0.0;
+  for (size_t i = 0, j = n - 1; i < n; j = i++) {
+    const double cross = p[j].x * p[i].y - p[i].x * p[j].y;
+    twice_area += cross;
+    cx += (p[j].x + p[i].x) * cross;
+    cy += (p[j].y + p[i].y) * cross;
+    const double edge = cv::norm(p[i] - p[j]);
+    edge_lengths[j] = edge;
+    length += edge;
+  }
+  const double signed_area = 0.5 * twice_area;
+  if (!(std::abs(signed_area) > 0.0)) return descriptor;
   if (!(length > 0.0) || !std::isfinite(length)) return descriptor;
-  const Point center = centroid(polygon);
+  Point center;
+  if (std::abs(signed_area) < 1e-12) {
+    for (size_t i = 0; i < n; ++i) center += p[i];
+    center *= 1.0 / static_cast<double>(n);
+  } else {
+    center = Point(cx / (6.0 * signed_area), cy / (6.0 * signed_area));
+  }
 
-  // r at kN points equally spaced along the boundary, starting at vertex 0.
-  double r[kN];
+  // r at kN points equally spaced along the boundary, starting at vertex 0: the offsets from the
+  // centre first, then their lengths (a loop of square roots alone, which vectorises).
+  double dx[kN], dy[kN];
   const double step = length / kN;
   size_t edge = 0;
-  double edge_start = 0.0;  // arc length at polygon[edge]
-  double edge_length = cv::norm(polygon[1] - polygon[0]);
+  double edge_start = 0.0;  // arc length at p[edge]
+  double edge_length = edge_lengths[0];
   for (int i = 0; i < kN; ++i) {
     const double s = i * step;
     while (s > edge_start + edge_length && edge + 1 < n) {
       edge_start += edge_length;
       ++edge;
-      edge_length = cv::norm(polygon[(edge + 1) % n] - polygon[edge]);
+      edge_length = edge_lengths[edge];
     }
     const double t = edge_length > 0.0 ? std::min(1.0, (s - edge_start) / edge_length) : 0.0;
-    const Point p = polygon[edge] + t * (polygon[(edge + 1) % n] - polygon[edge]);
-    r[i] = cv::norm(p - center);
+    const Point a = p[edge], b = p[edge + 1 < n ? edge + 1 : 0];
+    const Point d = a + t * (b - a) - center;
+    dx[i] = d.x;
+    dy[i] = d.y;
   }
+  double r[kN];
+  for (int i = 0; i < kN; ++i) r[i] = std::sqrt(dx[i] * dx[i] + dy[i] * dy[i]);
   double mean = 0.0;
   for (double v : r) mean += v;
   mean /= kN;
@@ -71,6 +97,13 @@ ShapeDescriptor shape_descriptor(const Polygon& polygon) {
   for (int k = 0; k < kK; ++k) descriptor.magnitudes[k] = std::hypot(re[k], im[k]) / (kN * mean);
   descriptor.valid = true;
   return descriptor;
+}
+
+}  // namespace
+
+ShapeDescriptor shape_descriptor(const Polygon& polygon) {
+  thread_local std::vector<double> lengths;
+  return describe(polygon.data(), polygon.size(), &lengths);
 }
 
 double shape_distance(const ShapeDescriptor& a, const ShapeDescriptor& b) {
@@ -115,14 +148,16 @@ ShapeDescriptor affine_shape_descriptor(const Polygon& polygon, double* aspect) 
   const double angle = 0.5 * std::atan2(2.0 * sxy, sxx - syy);
   const double c = std::cos(angle), s = std::sin(angle);
   const double kx = 1.0 / std::sqrt(major), ky = 1.0 / std::sqrt(minor);
-  Polygon whitened;
-  whitened.reserve(n);
-  for (const Point& v : polygon) {
-    const Point d = v - polygon[0] - Point(cx, cy);
-    whitened.emplace_back(kx * (c * d.x + s * d.y), ky * (-s * d.x + c * d.y));
+  // Kept between calls: the choice whitens several cycles a frame.
+  thread_local Polygon whitened;
+  thread_local std::vector<double> lengths;
+  whitened.resize(n);
+  for (size_t i = 0; i < n; ++i) {
+    const Point d = polygon[i] - polygon[0] - Point(cx, cy);
+    whitened[i] = Point(kx * (c * d.x + s * d.y), ky * (-s * d.x + c * d.y));
   }
   if (aspect) *aspect = std::sqrt(major / minor);
-  return shape_descriptor(whitened);
+  return describe(whitened.data(), n, &lengths);
 }
 
 }  // namespace scbt
