@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstddef>
 #include <cstdint>
 #include <stdexcept>
 
@@ -18,23 +19,56 @@ void ExposureOptions::check() const {
   if (sample_step < 1) throw std::invalid_argument("exposure sample_step must be >= 1");
 }
 
+namespace {
+
+// cv::cvtColor's BGR to grey weights in 14-bit fixed point (one channel: the level itself).
+template <bool kGrey>
+int grey_level(const std::uint8_t* p) {
+  if constexpr (kGrey) {
+    return p[0];
+  } else {
+    return (p[0] * 1868 + p[1] * 9617 + p[2] * 4899 + (1 << 13)) >> 14;
+  }
+}
+
+// Counts the grey levels of every step-th pixel of every step-th row (from step / 2) into
+// `histogram`; returns how many were counted. Consecutive samples go to four histograms in turn,
+// summed at the end: on a dark or flat frame most samples hit one level, and increments of one
+// counter would wait on each other.
+template <bool kGrey>
+int count_levels(const cv::Mat& frame, int step, std::array<int, 256>* histogram) {
+  const int first = step / 2;
+  if (first >= frame.cols) return 0;
+  const int columns = (frame.cols - 1 - first) / step + 1;
+  const std::ptrdiff_t stride = static_cast<std::ptrdiff_t>(step) * frame.channels();
+  std::array<std::array<int, 256>, 4> counts{};
+  int rows = 0;
+  for (int r = first; r < frame.rows; r += step, ++rows) {
+    const std::uint8_t* p =
+        frame.ptr<std::uint8_t>(r) + static_cast<std::ptrdiff_t>(first) * frame.channels();
+    int c = 0;
+    for (; c + 4 <= columns; c += 4, p += 4 * stride) {
+      ++counts[0][grey_level<kGrey>(p)];
+      ++counts[1][grey_level<kGrey>(p + stride)];
+      ++counts[2][grey_level<kGrey>(p + 2 * stride)];
+      ++counts[3][grey_level<kGrey>(p + 3 * stride)];
+    }
+    for (; c < columns; ++c, p += stride) ++counts[0][grey_level<kGrey>(p)];
+  }
+  for (int level = 0; level < 256; ++level) {
+    (*histogram)[level] = counts[0][level] + counts[1][level] + counts[2][level] + counts[3][level];
+  }
+  return rows * columns;
+}
+
+}  // namespace
+
 double intensity_spread(const cv::Mat& frame, int step) {
   if (frame.empty() || frame.depth() != CV_8U) return 0.0;
   step = std::max(step, 1);
-  const int channels = frame.channels();
   std::array<int, 256> histogram{};
-  int count = 0;
-  for (int r = step / 2; r < frame.rows; r += step) {
-    const std::uint8_t* row = frame.ptr<std::uint8_t>(r);
-    for (int c = step / 2; c < frame.cols; c += step) {
-      const std::uint8_t* p = row + c * channels;
-      // cv::cvtColor's BGR to grey weights in 14-bit fixed point.
-      const int grey =
-          channels == 1 ? p[0] : (p[0] * 1868 + p[1] * 9617 + p[2] * 4899 + (1 << 13)) >> 14;
-      ++histogram[grey];
-      ++count;
-    }
-  }
+  const int count = frame.channels() == 1 ? count_levels<true>(frame, step, &histogram)
+                                          : count_levels<false>(frame, step, &histogram);
   if (count == 0) return 0.0;
   // The levels below which 2 % and 98 % of the samples lie.
   const int low_rank = count / 50, high_rank = count - 1 - count / 50;
