@@ -23,20 +23,35 @@ struct ChannelWeights {
   }
 };
 
+// The sum of the grey levels of the (2 r + 1)^2 box centred on pixel (x, y), inside an image of
+// kChannels channels.
+template <int kChannels>
+double box_sum(const cv::Mat& image, int x, int y, int r, const ChannelWeights& weights) {
+  const auto& [blue, green, red] = weights.weighted;
+  double sum = 0.0;
+  for (int yy = y - r; yy <= y + r; ++yy) {
+    const std::uint8_t* p = image.ptr<std::uint8_t>(yy) + static_cast<size_t>(x - r) * kChannels;
+    for (int xx = x - r; xx <= x + r; ++xx, p += kChannels) {
+      if constexpr (kChannels == 1) {
+        sum += p[0];
+      } else {
+        sum += blue[p[0]] + green[p[1]] + red[p[2]];
+      }
+    }
+  }
+  return sum;
+}
+
 // Mean grey level of the (2 r + 1)^2 box centred on pixel (x, y); false if it leaves the image.
+// The box is read in a loop compiled for the image's channels (1, 3 or 4, as contrast_profile
+// admits): two boxes per sample.
 bool box_mean(const cv::Mat& image, int x, int y, int r, double* mean) {
   if (x - r < 0 || y - r < 0 || x + r >= image.cols || y + r >= image.rows) return false;
   static const ChannelWeights weights;
-  const auto& [blue, green, red] = weights.weighted;
   const int channels = image.channels();
-  double sum = 0.0;
-  for (int yy = y - r; yy <= y + r; ++yy) {
-    const std::uint8_t* row = image.ptr<std::uint8_t>(yy);
-    for (int xx = x - r; xx <= x + r; ++xx) {
-      const std::uint8_t* p = row + static_cast<size_t>(xx) * channels;
-      sum += channels == 1 ? p[0] : blue[p[0]] + green[p[1]] + red[p[2]];
-    }
-  }
+  const double sum = channels == 1   ? box_sum<1>(image, x, y, r, weights)
+                     : channels == 3 ? box_sum<3>(image, x, y, r, weights)
+                                     : box_sum<4>(image, x, y, r, weights);
   *mean = sum / ((2 * r + 1) * (2 * r + 1));
   return true;
 }
