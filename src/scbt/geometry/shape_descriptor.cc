@@ -4,6 +4,8 @@
 #include <limits>
 #include <vector>
 
+#include "scbt/geometry/avx2_clones.h"
+
 namespace scbt {
 namespace {
 
@@ -26,6 +28,24 @@ struct Twiddles {
     }
   }
 };
+
+// The real and imaginary parts of r's DFT at harmonics 1..kK. Each harmonic's sums are taken over
+// i in order, all harmonics side by side: independent sums the compiler puts in vector lanes (four
+// wide in the AVX2 clone), the same additions in the same order as one harmonic at a time.
+SCBT_AVX2_CLONES void harmonic_sums(const double* r, const Twiddles& twiddles, double* re_out,
+                                    double* im_out) {
+  double re[kK] = {}, im[kK] = {};  // local: kept in registers
+  for (int i = 0; i < kN; ++i) {
+    for (int k = 0; k < kK; ++k) {
+      re[k] += r[i] * twiddles.cos_table[i][k];
+      im[k] -= r[i] * twiddles.sin_table[i][k];
+    }
+  }
+  for (int k = 0; k < kK; ++k) {
+    re_out[k] = re[k];
+    im_out[k] = im[k];
+  }
+}
 
 // The descriptor of the closed polygon p[0..n). One pass takes the sums of area(), perimeter() and
 // centroid() (each added in their order, so each equals theirs to the bit) and keeps the edge
@@ -84,16 +104,9 @@ ShapeDescriptor describe(const Point* p, size_t n, std::vector<double>* lengths)
   mean /= kN;
   if (!(mean > 0.0)) return descriptor;
 
-  // Each harmonic's sums taken over i in order, all harmonics side by side (independent sums the
-  // compiler can put in vector lanes; the same additions in the same order as one at a time).
   static const Twiddles twiddles;
-  double re[kK] = {}, im[kK] = {};
-  for (int i = 0; i < kN; ++i) {
-    for (int k = 0; k < kK; ++k) {
-      re[k] += r[i] * twiddles.cos_table[i][k];
-      im[k] -= r[i] * twiddles.sin_table[i][k];
-    }
-  }
+  double re[kK], im[kK];
+  harmonic_sums(r, twiddles, re, im);
   for (int k = 0; k < kK; ++k) descriptor.magnitudes[k] = std::hypot(re[k], im[k]) / (kN * mean);
   descriptor.valid = true;
   return descriptor;
@@ -121,16 +134,25 @@ ShapeDescriptor affine_shape_descriptor(const Polygon& polygon, double* aspect) 
   const size_t n = polygon.size();
   if (n < 3) return ShapeDescriptor();
   // Second moments of the region by Green's theorem, about the first vertex (for precision).
+  // Each edge's end is the next one's start: its offset and its own products (the same
+  // expressions) are carried over rather than computed again.
   double a2 = 0.0, cx = 0.0, cy = 0.0, xx = 0.0, yy = 0.0, xy = 0.0;
+  Point p = polygon[0] - polygon[0];  // not (0, 0) for a non-finite vertex
+  double p_xx = p.x * p.x, p_yy = p.y * p.y, p_xy2 = 2.0 * p.x * p.y;
   for (size_t i = 0; i < n; ++i) {
-    const Point p = polygon[i] - polygon[0], q = polygon[(i + 1) % n] - polygon[0];
+    const Point q = polygon[i + 1 < n ? i + 1 : 0] - polygon[0];
+    const double q_xx = q.x * q.x, q_yy = q.y * q.y, q_xy2 = 2.0 * q.x * q.y;
     const double cross = p.x * q.y - q.x * p.y;
     a2 += cross;
     cx += (p.x + q.x) * cross;
     cy += (p.y + q.y) * cross;
-    xx += (p.x * p.x + p.x * q.x + q.x * q.x) * cross;
-    yy += (p.y * p.y + p.y * q.y + q.y * q.y) * cross;
-    xy += (p.x * q.y + 2.0 * p.x * p.y + 2.0 * q.x * q.y + q.x * p.y) * cross;
+    xx += (p_xx + p.x * q.x + q_xx) * cross;
+    yy += (p_yy + p.y * q.y + q_yy) * cross;
+    xy += (p.x * q.y + p_xy2 + q_xy2 + q.x * p.y) * cross;
+    p = q;
+    p_xx = q_xx;
+    p_yy = q_yy;
+    p_xy2 = q_xy2;
   }
   if (!(std::abs(a2) > 0.0) || !std::isfinite(a2)) return ShapeDescriptor();
   cx /= 3.0 * a2;
