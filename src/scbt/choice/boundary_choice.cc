@@ -31,13 +31,19 @@ double StableChooser::shape_factor(const SegmentGraph& graph, const RankingWeigh
   // weighed the same whichever copy the choice meets.
   const int n = static_cast<int>(cycle_.size());
   int start = 0;
+  Point s = n > 0 ? graph.vertices[cycle_[0]] : Point();
   for (int i = 1; i < n; ++i) {
     const Point& p = graph.vertices[cycle_[i]];
-    const Point& s = graph.vertices[cycle_[start]];
-    if (p.y < s.y || (p.y == s.y && p.x < s.x)) start = i;
+    if (p.y < s.y || (p.y == s.y && p.x < s.x)) {
+      start = i;
+      s = p;
+    }
   }
-  outline_.clear();
-  for (int i = 0; i < n; ++i) outline_.push_back(graph.vertices[cycle_[(start + i) % n]]);
+  // From `start` to the end, then from the first vertex up to it.
+  outline_.resize(static_cast<size_t>(n));
+  Point* out = outline_.data();
+  for (int i = start; i < n; ++i) *out++ = graph.vertices[cycle_[i]];
+  for (int i = 0; i < start; ++i) *out++ = graph.vertices[cycle_[i]];
   if (signed_area(outline_) < 0.0) std::reverse(outline_.begin() + 1, outline_.end());
   const double distance =
       shape_distance(affine_shape_descriptor(outline_), *weights.shape_reference);
