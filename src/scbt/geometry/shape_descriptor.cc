@@ -49,13 +49,15 @@ SCBT_AVX2_CLONES void harmonic_sums(const double* r, const Twiddles& twiddles, d
 
 // The descriptor of the closed polygon p[0..n). One pass takes the sums of area(), perimeter() and
 // centroid() (each added in their order, so each equals theirs to the bit) and keeps the edge
-// lengths for the sampling; `lengths` is scratch space.
-ShapeDescriptor describe(const Point* p, size_t n, std::vector<double>* lengths) {
+// lengths for the sampling.
+ShapeDescriptor describe(const Point* p, size_t n) {
   ShapeDescriptor descriptor;
   if (n < 3) return descriptor;
-  // lengths[e]: |p[e + 1] - p[e]| (edge n - 1 closing at p[0]); norm(a - b) == norm(b - a).
-  lengths->resize(n);
-  double* const edge_lengths = lengths->data();
+  // lengths[e]: |p[e + 1] - p[e]| (edge n - 1 closing at p[0]); norm(a - b) == norm(b - a). Kept
+  // between calls.
+  thread_local std::vector<double> lengths;
+  lengths.resize(n);
+  double* const edge_lengths = lengths.data();
   double twice_area = 0.0, length = 0.0, cx = 0.0, cy = 0.0;
   for (size_t i = 0, j = n - 1; i < n; j = i++) {
     const double cross = p[j].x * p[i].y - p[i].x * p[j].y;
@@ -115,8 +117,7 @@ ShapeDescriptor describe(const Point* p, size_t n, std::vector<double>* lengths)
 }  // namespace
 
 ShapeDescriptor shape_descriptor(const Polygon& polygon) {
-  thread_local std::vector<double> lengths;
-  return describe(polygon.data(), polygon.size(), &lengths);
+  return describe(polygon.data(), polygon.size());
 }
 
 double shape_distance(const ShapeDescriptor& a, const ShapeDescriptor& b) {
@@ -172,14 +173,13 @@ ShapeDescriptor affine_shape_descriptor(const Polygon& polygon, double* aspect) 
   const double kx = 1.0 / std::sqrt(major), ky = 1.0 / std::sqrt(minor);
   // Kept between calls: the choice whitens several cycles a frame.
   thread_local Polygon whitened;
-  thread_local std::vector<double> lengths;
   whitened.resize(n);
   for (size_t i = 0; i < n; ++i) {
     const Point d = polygon[i] - polygon[0] - Point(cx, cy);
     whitened[i] = Point(kx * (c * d.x + s * d.y), ky * (-s * d.x + c * d.y));
   }
   if (aspect) *aspect = std::sqrt(major / minor);
-  return describe(whitened.data(), n, &lengths);
+  return describe(whitened.data(), n);
 }
 
 }  // namespace scbt
