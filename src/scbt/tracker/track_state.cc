@@ -134,11 +134,14 @@ bool LossMonitor::matches(const Polygon& cycle, const BoundaryEvidence& evidence
 }
 
 TrackState LossMonitor::update(const Polygon& boundary, double confidence, bool held,
-                               const BoundaryEvidence& evidence,
-                               const ShapeDescriptor* descriptor) {
+                               const BoundaryEvidence& evidence, const ShapeDescriptor* descriptor,
+                               bool refound) {
   const bool miss = held || confidence < options_.miss_confidence;
+  // A boundary found after a cut of the view, or away from where it was searched for, is a
+  // re-find: it must keep the last confident shape, as one found while lost.
+  const bool must_match = after_cut_ || refound;
   const bool confident = confidence >= options_.tracking_confidence &&
-                         (!after_cut_ || evidence.shape_change <= options_.match_shape_distance);
+                         (!must_match || evidence.shape_change <= options_.match_shape_distance);
   unsure_ = confident ? 0 : unsure_ + 1;
   if (miss || unsure_ >= options_.unsure_to_lost) {
     misses_ += miss ? 1 : 0;

@@ -84,9 +84,12 @@ class LossMonitor {
   void reset(const Polygon& boundary, double inside_level);
   // The state of a frame whose boundary `boundary` was found with `confidence`, or held
   // (`held`, confidence 0). Records the boundary as confident when it is. `descriptor`, when
-  // given, is shape_descriptor(boundary) (measure_evidence's): not computed again.
+  // given, is shape_descriptor(boundary) (measure_evidence's): not computed again. `refound`:
+  // the boundary was found away from where it was searched for (Tracker's motion recovery); it
+  // is `tracking` only with the last confident shape, as after a frame that was not.
   TrackState update(const Polygon& boundary, double confidence, bool held,
-                    const BoundaryEvidence& evidence, const ShapeDescriptor* descriptor = nullptr);
+                    const BoundaryEvidence& evidence, const ShapeDescriptor* descriptor = nullptr,
+                    bool refound = false);
   // The object found again while lost: tracking resumes from `boundary`.
   void resume(const Polygon& boundary, double inside_level) { reset(boundary, inside_level); }
   // Whether a cycle found while lost is the object: its shape and inside level match the last

@@ -95,6 +95,20 @@ TEST(LossMonitor, AfterACutUnmatchedBoundariesAreLost) {
   EXPECT_FALSE(monitor.after_cut());
 }
 
+// A boundary found away from where it was searched for (the tracker's motion recovery) is a
+// re-find: tracked only with the last confident shape, as after a cut.
+TEST(LossMonitor, ARefoundBoundaryMustKeepTheShape) {
+  LossMonitor monitor;
+  monitor.reset(square(0), 100);
+  BoundaryEvidence changed = level(100);
+  changed.shape_change = 0.08;
+  EXPECT_EQ(monitor.update(square(1), 0.95, false, changed, nullptr, true), TrackState::kUncertain);
+  EXPECT_EQ(monitor.update(square(2), 0.95, false, changed), TrackState::kTracking);
+  BoundaryEvidence alike = level(100);
+  alike.shape_change = 0.02;
+  EXPECT_EQ(monitor.update(square(3), 0.95, false, alike, nullptr, true), TrackState::kTracking);
+}
+
 TEST(LossMonitor, DisabledNeverLost) {
   LossOptions options;
   options.enabled = false;

@@ -340,7 +340,10 @@ Tracker::Attempt* Tracker::search(const cv::Mat& frame, TrackResult* result) {
 
   // Lost: the boundary may have moved out of the search band (fast motion, camera swing).
   // Estimate how the content around it moved since it was last tracked, and search again there.
-  if (!a->choice && options_.recover_by_motion && !reference_gray_.empty()) {
+  // After a cut of the view the image motion measures nothing (a look-alike left in place
+  // would be found by it).
+  if (!a->choice && options_.recover_by_motion && !reference_gray_.empty() &&
+      !monitor_.after_cut()) {
     const Clock::time_point recover_start = Clock::now();
     cv::Mat current;
     to_gray(frame(reference_roi_), &current);
@@ -454,7 +457,7 @@ TrackResult Tracker::track(const cv::Mat& frame) {
   }
   // A found boundary's descriptor came with its evidence (assess): the monitor needs no other.
   result.state = monitor_.update(boundary_, result.confidence, result.held, result.evidence,
-                                 result.held ? nullptr : &a->descriptor);
+                                 result.held ? nullptr : &a->descriptor, result.recovered);
   if (result.state == TrackState::kTracking) {
     keyframes_.offer(frame, boundary_);
     if (options_.shape_weight > 0.0) shape_memory_.remember(boundary_);

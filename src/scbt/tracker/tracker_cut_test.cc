@@ -117,7 +117,7 @@ TEST_P(TrackerCutTest, TheObjectComesBackSmallerOrLarger) {
 INSTANTIATE_TEST_SUITE_P(Shapes, TrackerCutTest,
                          ::testing::Combine(::testing::Values(SceneShape::kRim, SceneShape::kBox,
                                                               SceneShape::kPolygon),
-                                            ::testing::Values(1u, 2u)));
+                                            ::testing::Values(1u, 2u, 3u, 4u, 5u, 6u, 7u, 8u)));
 
 }  // namespace
 }  // namespace scbt

@@ -6,6 +6,7 @@
 
 #include "scbt/lines/line_detector.h"
 #include "scbt/tracker/tracker.h"
+#include "scbt/tracker/view_cut.h"
 
 namespace scbt {
 namespace {
@@ -27,22 +28,6 @@ constexpr double kSearchSimilarity = 0.8;
 // way of a placement is within the search's area gate.
 constexpr double kCoarseScaleStep = 1.2;
 
-// How alike two views of the same window are, blur and a moderate shift aside: the best zero-mean
-// normalised correlation of the middle of `reference`, both averaged down to kThumb x kThumb,
-// over shifts of up to (kThumb - kInner) / 2 cells. Near 1 for the same view; low for a cut.
-constexpr int kThumb = 32;
-constexpr int kInner = 20;
-double coarse_view_correlation(const cv::Mat& reference, const cv::Mat& current) {
-  cv::Mat a, b, scores;
-  cv::resize(reference, a, cv::Size(kThumb, kThumb), 0.0, 0.0, cv::INTER_AREA);
-  cv::resize(current, b, cv::Size(kThumb, kThumb), 0.0, 0.0, cv::INTER_AREA);
-  const int margin = (kThumb - kInner) / 2;
-  cv::matchTemplate(b, a(cv::Rect(margin, margin, kInner, kInner)), scores, cv::TM_CCOEFF_NORMED);
-  double best = 0.0;
-  cv::minMaxLoc(scores, nullptr, &best);
-  return best;
-}
-
 }  // namespace
 
 BoundaryEvidence Tracker::evidence_of(const Attempt& a, const Polygon& chosen,
@@ -59,6 +44,14 @@ void Tracker::check_view_cut(const cv::Mat& frame, const TrackResult& result) {
   if (monitor_.state() != TrackState::kTracking || !surprise || reference_gray_.empty()) return;
   to_gray(frame(reference_roi_), &cut_gray_);
   if (coarse_view_correlation(reference_gray_, cut_gray_) < loss.cut_correlation) {
+    monitor_.note_view_cut();
+    return;
+  }
+  // The boundary the reference was taken with (not moved since: held, or this frame's not yet
+  // taken), in the window's pixels.
+  Polygon in_window = boundary_;
+  for (Point& p : in_window) p -= Point(reference_roi_.x, reference_roi_.y);
+  if (surroundings_correlation(reference_gray_, cut_gray_, in_window) < loss.cut_correlation) {
     monitor_.note_view_cut();
   }
 }
