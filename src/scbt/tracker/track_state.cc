@@ -121,14 +121,15 @@ void LossMonitor::reset(const Polygon& boundary, double inside_level) {
   after_cut_ = false;
 }
 
+bool LossMonitor::keeps_level(const BoundaryEvidence& evidence) const {
+  const double level = last_confident_.level;
+  return level < 0.0 || evidence.inside_level < 0.0 ||
+         std::abs(evidence.inside_level - level) <= options_.max_level_change;
+}
+
 bool LossMonitor::matches(const Polygon& cycle, const BoundaryEvidence& evidence, double confidence,
                           double min_confidence) const {
-  if (confidence < min_confidence) return false;
-  const double level = last_confident_.level;
-  if (level >= 0.0 && evidence.inside_level >= 0.0 &&
-      std::abs(evidence.inside_level - level) > options_.max_level_change) {
-    return false;
-  }
+  if (confidence < min_confidence || !keeps_level(evidence)) return false;
   return shape_distance(shape_descriptor(cycle), last_confident_.descriptor) <=
          options_.match_shape_distance;
 }
@@ -138,10 +139,11 @@ TrackState LossMonitor::update(const Polygon& boundary, double confidence, bool 
                                bool refound) {
   const bool miss = held || confidence < options_.miss_confidence;
   // A boundary found after a cut of the view, or away from where it was searched for, is a
-  // re-find: it must keep the last confident shape, as one found while lost.
+  // re-find: it must keep the last confident shape and inside level, as one found while lost.
   const bool must_match = after_cut_ || refound;
   const bool confident = confidence >= options_.tracking_confidence &&
-                         (!must_match || evidence.shape_change <= options_.match_shape_distance);
+                         (!must_match || (evidence.shape_change <= options_.match_shape_distance &&
+                                          keeps_level(evidence)));
   unsure_ = confident ? 0 : unsure_ + 1;
   if (miss || unsure_ >= options_.unsure_to_lost) {
     misses_ += miss ? 1 : 0;

@@ -86,7 +86,7 @@ class LossMonitor {
   // (`held`, confidence 0). Records the boundary as confident when it is. `descriptor`, when
   // given, is shape_descriptor(boundary) (measure_evidence's): not computed again. `refound`:
   // the boundary was found away from where it was searched for (Tracker's motion recovery); it
-  // is `tracking` only with the last confident shape, as after a frame that was not.
+  // is `tracking` only with the last confident shape and inside level, as after a cut.
   TrackState update(const Polygon& boundary, double confidence, bool held,
                     const BoundaryEvidence& evidence, const ShapeDescriptor* descriptor = nullptr,
                     bool refound = false);
@@ -136,6 +136,9 @@ class LossMonitor {
   // earlier.
   static constexpr int kLag = 4;
 
+  // The grey level just inside `evidence`'s boundary is within max_level_change of the last
+  // confident one's (or either is unknown).
+  bool keeps_level(const BoundaryEvidence& evidence) const;
   void add_confident(const Polygon& boundary, double inside_level, double confidence,
                      const ShapeDescriptor* descriptor = nullptr);
   int newest() const { return (kept_next_ + kKept - 1) % kKept; }

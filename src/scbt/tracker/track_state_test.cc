@@ -79,6 +79,22 @@ TEST(LossMonitor, AfterACutOnlyAMatchingShapeIsTracked) {
   EXPECT_EQ(monitor.update(square(4), 0.95, false, changed), TrackState::kTracking);
 }
 
+// ... and its inside level: a cycle of the object's shape around something of another grey is
+// not the object.
+TEST(LossMonitor, AfterACutTheInsideLevelMustMatchToo) {
+  LossMonitor monitor;
+  monitor.reset(square(0), 200);
+  monitor.note_view_cut();
+  BoundaryEvidence darker = level(110);
+  darker.shape_change = 0.02;
+  EXPECT_EQ(monitor.update(square(1), 0.95, false, darker), TrackState::kUncertain);
+  BoundaryEvidence alike = level(190);
+  alike.shape_change = 0.02;
+  EXPECT_EQ(monitor.update(square(2), 0.95, false, alike), TrackState::kTracking);
+  // In a continuous view the level may change (lighting): tracked.
+  EXPECT_EQ(monitor.update(square(3), 0.95, false, darker), TrackState::kTracking);
+}
+
 TEST(LossMonitor, AfterACutUnmatchedBoundariesAreLost) {
   LossMonitor monitor;
   monitor.reset(square(0), 100);
