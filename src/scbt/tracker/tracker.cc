@@ -340,13 +340,8 @@ Tracker::Attempt* Tracker::search(const cv::Mat& frame, TrackResult* result) {
 
   // Lost: the boundary may have moved out of the search band (fast motion, camera swing).
   // Estimate how the content around it moved since it was last tracked, and search again there.
-  // The search came back empty, a surprise: after a cut of the view the image motion measures
-  // nothing (a look-alike left in place would be found by it).
-  if (!a->choice && options_.recover_by_motion && !reference_gray_.empty()) {
-    TrackResult held;
-    held.held = true;
-    check_view_cut(frame, held);
-  }
+  // After a cut of the view the image motion measures nothing (a look-alike left in place
+  // would be found by it).
   if (!a->choice && options_.recover_by_motion && !reference_gray_.empty() &&
       !monitor_.after_cut()) {
     const Clock::time_point recover_start = Clock::now();
@@ -435,7 +430,6 @@ TrackResult Tracker::track(const cv::Mat& frame) {
   scale_thresholds_to_exposure(frame);
   ++frames_since_noise_estimate_;
   if (monitor_.state() == TrackState::kLost) return track_lost(frame);
-  view_checked_ = false;
   TrackResult result;
   Attempt* a = search(frame, &result);
 

@@ -195,7 +195,6 @@ class Tracker {
   // beyond a match): whether the view was cut (LossOptions::cut_correlation), told to the monitor.
   // Needs the motion reference unchanged (tracker_lost.cc).
   void check_view_cut(const cv::Mat& frame, const TrackResult& result);
-  bool view_checked_ = false;  // check_view_cut ran on this frame (once is enough)
   // A frame while the object is lost: search for it, near its last position, then anywhere.
   TrackResult track_lost(const cv::Mat& frame);
   // The first search while lost (tracker_resume.cc): tracking's own search, with the tracking

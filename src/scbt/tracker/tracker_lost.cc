@@ -41,11 +41,7 @@ void Tracker::check_view_cut(const cv::Mat& frame, const TrackResult& result) {
   const LossOptions& loss = options_.loss;
   const bool surprise = result.held || result.confidence < loss.tracking_confidence ||
                         result.evidence.shape_change > loss.match_shape_distance;
-  if (view_checked_ || monitor_.state() != TrackState::kTracking || !surprise ||
-      reference_gray_.empty()) {
-    return;
-  }
-  view_checked_ = true;
+  if (monitor_.state() != TrackState::kTracking || !surprise || reference_gray_.empty()) return;
   to_gray(frame(reference_roi_), &cut_gray_);
   if (coarse_view_correlation(reference_gray_, cut_gray_) < loss.cut_correlation) {
     monitor_.note_view_cut();
