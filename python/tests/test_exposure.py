@@ -1,4 +1,4 @@
-"""normalize_exposure: the detector's thresholds follow a dim frame's contrast."""
+"""normalize_exposure: a dim frame's grey levels are stretched before detection."""
 
 import numpy as np
 import pytest
@@ -16,7 +16,7 @@ def test_normalize_exposure_is_on_by_default_and_can_be_switched_off():
     assert scbt.Tracker(normalize_exposure=False).options["normalize_exposure"] is False
 
 
-def test_box_in_a_dim_frame_finds_the_outline_only_with_scaled_thresholds():
+def test_box_in_a_dim_frame_finds_the_outline_only_when_stretched():
     truth = pentagon((160, 120), 60)
     # At 6 % of the light the outline's step (130 grey levels lit) is under 8 levels: below
     # EDLines' published gradient threshold.

@@ -75,8 +75,9 @@ void add_tracker_options(CLI::App* command, TrackerOptions* options, std::string
       ->capture_default_str();
   command
       ->add_option("--normalize-exposure", options->exposure.normalize,
-                   "Scale the EDLines thresholds down on a frame whose grey levels span less than "
-                   "half the 8-bit range (dim or low-contrast camera) (true/false)")
+                   "Stretch the grey levels of a frame that spans less than half the 8-bit range "
+                   "(dim or low-contrast camera) to half of it before line detection, as far as "
+                   "nothing saturates (true/false)")
       ->capture_default_str();
   command
       ->add_option("--adapt-to-blur", options->blur.adapt,

@@ -63,24 +63,28 @@ int count_levels(const cv::Mat& frame, int step, std::array<int, 256>* histogram
 
 }  // namespace
 
-double intensity_spread(const cv::Mat& frame, int step) {
+double intensity_spread(const cv::Mat& frame, int step, IntensityLevels* levels) {
   if (frame.empty() || frame.depth() != CV_8U) return 0.0;
   step = std::max(step, 1);
   std::array<int, 256> histogram{};
   const int count = frame.channels() == 1 ? count_levels<true>(frame, step, &histogram)
                                           : count_levels<false>(frame, step, &histogram);
   if (count == 0) return 0.0;
-  // The levels below which 2 % and 98 % of the samples lie.
-  const int low_rank = count / 50, high_rank = count - 1 - count / 50;
-  int low = -1, high = -1, seen = 0;
+  // The levels below which 0.1 %, 2 %, 98 % and 99.9 % of the samples lie.
+  const int darkest_rank = count / 1000, low_rank = count / 50;
+  const int high_rank = count - 1 - count / 50, brightest_rank = count - 1 - count / 1000;
+  int darkest = -1, low = -1, high = -1, brightest = -1, seen = 0;
   for (int level = 0; level < 256; ++level) {
     seen += histogram[level];
+    if (darkest < 0 && seen > darkest_rank) darkest = level;
     if (low < 0 && seen > low_rank) low = level;
-    if (seen > high_rank) {
-      high = level;
+    if (high < 0 && seen > high_rank) high = level;
+    if (seen > brightest_rank) {
+      brightest = level;
       break;
     }
   }
+  if (levels != nullptr) *levels = {darkest, low, high, brightest};
   return static_cast<double>(high - low);
 }
 
@@ -89,8 +93,26 @@ double exposure_gain(double spread, const ExposureOptions& options) {
   return std::clamp(options.full_contrast / spread, 1.0, options.max_gain);
 }
 
+GreyStretch grey_stretch(double gain, const IntensityLevels& levels) {
+  if (!(gain > 1.0)) return {};
+  const double range = std::max(1, levels.brightest - levels.darkest);
+  const double applied = std::min(gain, 255.0 / range);
+  if (!(applied > 1.0)) return {1.0, 0.0, gain};
+  const double middle = 0.5 * (levels.darkest + levels.brightest);
+  return {applied, 127.5 - applied * middle, gain / applied};
+}
+
+double unstretched_level(const GreyStretch& stretch, double level) {
+  if (level < 0.0 || !(stretch.gain > 1.0)) return level;
+  return std::clamp((level - stretch.offset) / stretch.gain, 0.0, 255.0);
+}
+
 int threshold_for_exposure(int threshold, double gain) {
   return std::max(1, static_cast<int>(std::lround(threshold / gain)));
+}
+
+void apply_grey_stretch(const GreyStretch& stretch, cv::Mat* gray) {
+  if (stretch.gain > 1.0) gray->convertTo(*gray, -1, stretch.gain, stretch.offset);
 }
 
 }  // namespace scbt

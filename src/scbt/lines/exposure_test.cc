@@ -39,22 +39,69 @@ TEST(ExposureTest, SpreadOfColourIsThatOfItsGrey) {
   EXPECT_EQ(intensity_spread(bgra, 3), intensity_spread(grey, 3));
 }
 
-TEST(ExposureTest, WellExposedFramesKeepThePublishedThresholds) {
+TEST(ExposureTest, WellExposedFramesAreNotStretched) {
   const ExposureOptions options;
   EXPECT_EQ(exposure_gain(245.0, options), 1.0);
   EXPECT_EQ(exposure_gain(options.full_contrast, options), 1.0);
-  EXPECT_EQ(threshold_for_exposure(36, 1.0), 36);
-  EXPECT_EQ(threshold_for_exposure(8, 1.0), 8);
+  const GreyStretch none = grey_stretch(1.0, IntensityLevels{30, 40, 200, 210});
+  EXPECT_EQ(none.gain, 1.0);
+  EXPECT_EQ(none.offset, 0.0);
+  EXPECT_EQ(none.residual, 1.0);
+  cv::Mat gray = ramp(0, 255);
+  const cv::Mat before = gray.clone();
+  apply_grey_stretch(none, &gray);
+  EXPECT_EQ(cv::norm(gray, before, cv::NORM_INF), 0.0);
 }
 
-TEST(ExposureTest, DimFramesScaleTheThresholdsWithTheirContrast) {
+TEST(ExposureTest, DimFramesAreStretchedToTheFullContrast) {
   ExposureOptions options;
   EXPECT_NEAR(exposure_gain(64.0, options), 2.0, 1e-12);
-  EXPECT_EQ(threshold_for_exposure(36, 2.0), 18);
-  EXPECT_EQ(threshold_for_exposure(8, 2.0), 4);
   // Capped: a flat frame is no reason to detect noise.
   EXPECT_EQ(exposure_gain(1.0, options), options.max_gain);
   EXPECT_EQ(exposure_gain(0.0, options), options.max_gain);
+  // A frame at 30 % of the light: its spread, read again after the stretch, is the full contrast,
+  // and nothing saturates.
+  cv::Mat gray = ramp(0, 76);
+  IntensityLevels levels;
+  const double spread = intensity_spread(gray, 1, &levels);
+  EXPECT_LE(levels.darkest, levels.low);
+  EXPECT_LE(levels.low, 3);
+  EXPECT_GE(levels.brightest, levels.high);
+  const GreyStretch stretch = grey_stretch(exposure_gain(spread, options), levels);
+  EXPECT_EQ(stretch.residual, 1.0);
+  apply_grey_stretch(stretch, &gray);
+  EXPECT_NEAR(intensity_spread(gray, 1), options.full_contrast, 2.0);
+  double lowest = 0.0, highest = 0.0;
+  cv::minMaxLoc(gray, &lowest, &highest);
+  EXPECT_GT(lowest, 0.0);
+  EXPECT_LT(highest, 255.0);
+  // A level read on the stretched frame, in the frame's own levels.
+  EXPECT_NEAR(unstretched_level(stretch, stretch.gain * 50.0 + stretch.offset), 50.0, 1e-9);
+  EXPECT_EQ(unstretched_level(stretch, -1.0), -1.0);
+}
+
+// A dim frame with a bright spot: the stretch stops where the spot would saturate, and the
+// thresholds are scaled by the gain it leaves.
+TEST(ExposureTest, AStretchThatWouldSaturateLeavesTheRestToTheThresholds) {
+  ExposureOptions options;
+  cv::Mat gray = ramp(20, 60);
+  gray(cv::Rect(0, 0, 20, 15)).setTo(250);  // 1 % of the frame
+  IntensityLevels levels;
+  const double spread = intensity_spread(gray, 1, &levels);
+  const double gain = exposure_gain(spread, options);
+  const GreyStretch stretch = grey_stretch(gain, levels);
+  EXPECT_LT(stretch.gain, gain);
+  EXPECT_NEAR(stretch.gain * stretch.residual, gain, 1e-9);
+  const cv::Mat before = gray.clone();
+  apply_grey_stretch(stretch, &gray);
+  // Nothing clipped: every level maps back to where it was (to the rounding).
+  cv::Mat back;
+  gray.convertTo(back, CV_64F, 1.0 / stretch.gain, -stretch.offset / stretch.gain);
+  cv::Mat original;
+  before.convertTo(original, CV_64F);
+  EXPECT_LE(cv::norm(back, original, cv::NORM_INF), 0.5 / stretch.gain + 1e-9);
+  EXPECT_EQ(threshold_for_exposure(36, 1.0), 36);
+  EXPECT_EQ(threshold_for_exposure(8, 2.0), 4);
   EXPECT_EQ(threshold_for_exposure(8, 64.0), 1);
 }
 

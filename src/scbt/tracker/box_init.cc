@@ -47,6 +47,7 @@ Polygon Tracker::init_from_box(const cv::Mat& frame, const cv::Rect& box) {
                                 " frame");
   }
   scale_thresholds_to_exposure(frame);
+  to_exposed_gray(frame, &gray);
   const std::vector<Segment> segments = detector_->detect_in(gray(box), box.tl(), frame.size());
   const std::optional<Polygon> boundary =
       most_salient_boundary(segments, kMinBoxAreaShare * box.area(), options_.bdsp);

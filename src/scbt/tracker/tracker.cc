@@ -63,11 +63,13 @@ Tracker& Tracker::operator=(Tracker&&) noexcept = default;
 void Tracker::scale_thresholds_to_exposure(const cv::Mat& frame) {
   gradient_threshold_ = options_.detector.gradient_threshold;
   anchor_threshold_ = options_.detector.anchor_threshold;
+  exposure_stretch_ = {};
   if (options_.exposure.normalize && detector_->adapts_thresholds()) {
-    const double gain =
-        exposure_gain(intensity_spread(frame, options_.exposure.sample_step), options_.exposure);
-    gradient_threshold_ = threshold_for_exposure(gradient_threshold_, gain);
-    anchor_threshold_ = threshold_for_exposure(anchor_threshold_, gain);
+    IntensityLevels levels;
+    const double spread = intensity_spread(frame, options_.exposure.sample_step, &levels);
+    exposure_stretch_ = grey_stretch(exposure_gain(spread, options_.exposure), levels);
+    gradient_threshold_ = threshold_for_exposure(gradient_threshold_, exposure_stretch_.residual);
+    anchor_threshold_ = threshold_for_exposure(anchor_threshold_, exposure_stretch_.residual);
   }
   step_threshold_ = gradient_threshold_;
   const double blur_gain = edge_blur_gain(edge_blur_sigma_, own_smoothing(options_), options_.blur);
@@ -79,6 +81,14 @@ void Tracker::scale_thresholds_to_exposure(const cv::Mat& frame) {
     anchor_threshold_ = std::max(1, static_cast<int>(std::lround(anchor_threshold_ * anchor_gain)));
   }
   detector_->set_edge_thresholds(gradient_threshold_, anchor_threshold_);
+}
+
+void Tracker::to_exposed_gray(const cv::Mat& part, cv::Mat* gray) const {
+  to_gray(part, gray);
+  if (exposure_stretch_.gain <= 1.0) return;
+  // Grey input comes back as a view of the caller's frame, which must not be written.
+  if (gray->data == part.data) *gray = gray->clone();
+  apply_grey_stretch(exposure_stretch_, gray);
 }
 
 void Tracker::measure_edge_blur(const cv::Mat& gray, cv::Point window_tl) {
@@ -99,10 +109,10 @@ void Tracker::init(const cv::Mat& frame, const Polygon& polygon) {
   boundary_ = polygon;
   boundary_area_ = area(polygon);
   reference_roi_ = cv::Rect(cv::Point(0, 0), frame.size());
-  to_gray(frame, &reference_gray_);
-  reference_gray_ = reference_gray_.clone();
   edge_blur_sigma_ = -1.0;
-  scale_thresholds_to_exposure(frame);  // the exposure's scaling is what the blur estimate needs
+  scale_thresholds_to_exposure(frame);  // the exposure's stretch is what the blur estimate needs
+  to_exposed_gray(frame, &reference_gray_);
+  reference_gray_ = reference_gray_.clone();
   measure_edge_blur(reference_gray_, cv::Point(0, 0));
   scale_thresholds_to_exposure(frame);
   frame_size_ = frame.size();
@@ -112,7 +122,9 @@ void Tracker::init(const cv::Mat& frame, const Polygon& polygon) {
   noise_sigma_ = -1.0;
   appearance_.remember(frame, boundary_);
   shape_memory_.restart(boundary_);
-  monitor_.reset(polygon, sample_edges(polygon, reference_gray_, {0, 0}, 0.0).inside_level);
+  monitor_.reset(
+      polygon, unstretched_level(exposure_stretch_,
+                                 sample_edges(polygon, reference_gray_, {0, 0}, 0.0).inside_level));
   pending_.clear();
   pending_matches_ = 0;
   keyframes_.clear();
@@ -132,7 +144,7 @@ void Tracker::attempt(const cv::Mat& frame, const Polygon& prior, Attempt* a, do
         detection_roi(prior, options_.filter_distance + options_.detector.roi_padding, frame_size_);
     if (a->roi.empty()) a->roi = cv::Rect(cv::Point(0, 0), frame_size_);
   }
-  to_gray(frame(a->roi), &gray_);
+  to_exposed_gray(frame(a->roi), &gray_);
   gray_roi_ = a->roi;
   const cv::Mat* detect_on = &gray_;
   bool thresholds_changed = adapt;
@@ -316,7 +328,7 @@ Tracker::Attempt* Tracker::search(const cv::Mat& frame, TrackResult* result) {
       }
       // The grey window must be the chosen attempt's (the motion reference is taken from it).
       if (a->roi != gray_roi_) {
-        to_gray(frame(a->roi), &gray_);
+        to_exposed_gray(frame(a->roi), &gray_);
         gray_roi_ = a->roi;
       }
     }
@@ -346,7 +358,7 @@ Tracker::Attempt* Tracker::search(const cv::Mat& frame, TrackResult* result) {
       !monitor_.after_cut()) {
     const Clock::time_point recover_start = Clock::now();
     cv::Mat current;
-    to_gray(frame(reference_roi_), &current);
+    to_exposed_gray(frame(reference_roi_), &current);
     const std::optional<TranslationEstimate> motion =
         translation_.estimate(reference_gray_, current);
     result->stages.recovery_ms = elapsed_ms(recover_start);

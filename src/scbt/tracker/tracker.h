@@ -10,6 +10,7 @@
 #include "scbt/geometry/polygon.h"
 #include "scbt/geometry/shape_descriptor.h"
 #include "scbt/graph/segment_graph.h"
+#include "scbt/lines/exposure.h"
 #include "scbt/tracker/contrast_profile.h"
 #include "scbt/tracker/cycle_stage.h"
 #include "scbt/tracker/frame_checks.h"
@@ -156,13 +157,18 @@ class Tracker {
   // (LossOptions::match_shape_distance).
   bool trusted(const Attempt& a, bool adapted) const;
   bool adapted_first_ = false;  // the first search of a frame uses adapted thresholds
-  // This frame's published thresholds, scaled to its exposure (ExposureOptions): what adapted
-  // thresholds start from and detection returns to.
+  // This frame's exposure stretch (ExposureOptions) and published thresholds scaled to its
+  // blur: what adapted thresholds start from and detection returns to.
   void scale_thresholds_to_exposure(const cv::Mat& frame);
+  GreyStretch exposure_stretch_;
+  // `part` of this frame (or the frame) in grey, stretched to the frame's exposure: every grey
+  // window the tracker detects, measures or compares on.
+  void to_exposed_gray(const cv::Mat& part, cv::Mat* gray) const;
   int gradient_threshold_;
   int anchor_threshold_;
-  // The gradient threshold scaled to the exposure only: a blurred step keeps its height, so the
-  // smallest grey step counted as an edge (the confidence's, the blur estimate's) follows this.
+  // The gradient threshold scaled to the exposure only (the gain the stretch leaves): a blurred
+  // step keeps its height, so the smallest grey step counted as an edge (the confidence's, the
+  // blur estimate's) follows this.
   int step_threshold_;
   // TrackerOptions::blur: the running estimate of the edge spread (px) of the confidently tracked
   // boundaries (< 0: none yet), which scales the thresholds (edge_blur_gain), and its update from

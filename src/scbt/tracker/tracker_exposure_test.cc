@@ -1,7 +1,7 @@
 // ExposureOptions on rendered views: in a dim view the hexagon's edge falls below EDLines'
-// published thresholds; scaled to the frame's contrast they detect it again (with no weak-frame
-// retry to help), a box drawn in a dim frame finds the outline, and a well-exposed view is tracked
-// exactly as without the scaling.
+// published thresholds; with the frame's grey levels stretched to its exposure they detect it
+// again (with no weak-frame retry to help), a box drawn in a dim frame finds the outline, and a
+// well-exposed view is tracked exactly as without the stretch.
 #include <gtest/gtest.h>
 
 #include <opencv2/core.hpp>

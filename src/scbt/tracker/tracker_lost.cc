@@ -33,8 +33,11 @@ constexpr double kCoarseScaleStep = 1.2;
 BoundaryEvidence Tracker::evidence_of(const Attempt& a, const Polygon& chosen,
                                       const Polygon& previous, ShapeDescriptor* descriptor) const {
   const double gap_length = a.choice->cost * a.cycles->area(a.choice->index);
-  return measure_evidence(chosen, gap_length, previous, monitor_.reference(), gray_, a.roi.tl(),
-                          min_edge_step(step_threshold_), descriptor);
+  BoundaryEvidence evidence =
+      measure_evidence(chosen, gap_length, previous, monitor_.reference(), gray_, a.roi.tl(),
+                       min_edge_step(step_threshold_), descriptor);
+  evidence.inside_level = unstretched_level(exposure_stretch_, evidence.inside_level);
+  return evidence;
 }
 
 void Tracker::check_view_cut(const cv::Mat& frame, const TrackResult& result) {
@@ -42,7 +45,7 @@ void Tracker::check_view_cut(const cv::Mat& frame, const TrackResult& result) {
   const bool surprise = result.held || result.confidence < loss.tracking_confidence ||
                         result.evidence.shape_change > loss.match_shape_distance;
   if (monitor_.state() != TrackState::kTracking || !surprise || reference_gray_.empty()) return;
-  to_gray(frame(reference_roi_), &cut_gray_);
+  to_exposed_gray(frame(reference_roi_), &cut_gray_);
   if (coarse_view_correlation(reference_gray_, cut_gray_) < loss.cut_correlation) {
     monitor_.note_view_cut();
     return;
@@ -65,7 +68,7 @@ TrackResult Tracker::track_lost(const cv::Mat& frame) {
   result.state = TrackState::kLost;
   result.held = true;
   const Clock::time_point line_start = Clock::now();
-  to_gray(frame, &search_gray_);
+  to_exposed_gray(frame, &search_gray_);
   const std::vector<Segment> segments =
       detector_->detect_in(search_gray_, cv::Point(0, 0), frame_size_);
   result.line_ms = in_place_line_ms + elapsed_ms(line_start);

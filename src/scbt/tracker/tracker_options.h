@@ -63,8 +63,8 @@ struct TrackerOptions {
   bool confirm_motion = true;
   double min_motion_agreement = 0.0;  // ... and the predicted placement's own agreement (cosine)
   ContrastProfileOptions appearance;
-  // EDLines thresholds scaled down on a frame of low contrast (dim or washed out), as if its
-  // grey levels were stretched to half the 8-bit range (exposure.h).
+  // The grey levels of a frame of low contrast (dim or washed out) stretched to half the 8-bit
+  // range before detection, as an automatic gain would, as far as nothing saturates (exposure.h).
   ExposureOptions exposure;
   // EDLines thresholds scaled down by the edge spread of the last confidently tracked boundary
   // (edge_blur.h): a defocused, smoothed or motion-blurred camera lowers every edge's gradient,

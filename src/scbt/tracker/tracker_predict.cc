@@ -18,7 +18,7 @@ void Tracker::place_by_image_motion(const cv::Mat& frame) {
   const double min_move = options_.min_predicted_move * options_.filter_distance;
   if (cv::norm(step) < min_move) return;
   if (reference_gray_.empty()) return;
-  to_gray(frame(reference_roi_), &cut_gray_);
+  to_exposed_gray(frame(reference_roi_), &cut_gray_);
   // Measured on the windows averaged down to at most 64 px a side: a few px of precision, well
   // inside the band searched around the moved boundary, at about a tenth of the cost of 200 px.
   constexpr int kSide = 64;

@@ -51,7 +51,7 @@ void Tracker::resume_tracking_from(const cv::Mat& frame, Polygon boundary, Track
   reference_roi_ = detection_roi(
       boundary_, options_.filter_distance + options_.detector.roi_padding, frame_size_);
   if (reference_roi_.empty()) reference_roi_ = cv::Rect(cv::Point(0, 0), frame_size_);
-  to_gray(frame(reference_roi_), &cut_gray_);
+  to_exposed_gray(frame(reference_roi_), &cut_gray_);
   cut_gray_.copyTo(reference_gray_);  // a deep copy: grey input is a view of the caller's frame
   if (options_.predict_motion && options_.confirm_motion) appearance_.remember(frame, boundary_);
   shape_memory_.restart(boundary_);
