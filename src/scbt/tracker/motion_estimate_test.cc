@@ -5,24 +5,19 @@
 #include <opencv2/imgproc.hpp>
 #include <random>
 
+#include "scbt/tracker/texture_test_util.h"
+
 namespace scbt {
 namespace {
 
-// A random smooth texture, so that every shift is well defined.
-cv::Mat random_texture(cv::Size size, unsigned seed) {
-  cv::Mat noise(size, CV_8U);
-  cv::RNG rng(seed);
-  rng.fill(noise, cv::RNG::UNIFORM, 0, 256);
-  cv::GaussianBlur(noise, noise, cv::Size(0, 0), 2.0);
-  cv::normalize(noise, noise, 0, 255, cv::NORM_MINMAX);
-  return noise;
-}
+// Texture smoothing (px): fine enough for a shift to the pixel.
+constexpr double kTextureSigma = 2.0;
 
 TEST(EstimateTranslation, RecoversIntegerShiftsOfATexture) {
   std::mt19937 rng(7);
   std::uniform_int_distribution<int> shift(-25, 25);
   for (int trial = 0; trial < 30; ++trial) {
-    const cv::Mat scene = random_texture({320, 320}, 100 + trial);
+    const cv::Mat scene = smooth_random_texture({320, 320}, 100 + trial, kTextureSigma);
     const int dx = shift(rng), dy = shift(rng);
     const cv::Rect window(80, 80, 160, 160);
     const cv::Mat reference = scene(window);
@@ -42,7 +37,7 @@ TEST(EstimateTranslation, RecoversShiftsOfLargeWindowsWithinAPixel) {
   std::mt19937 rng(9);
   std::uniform_int_distribution<int> shift(-40, 40);
   for (int trial = 0; trial < 20; ++trial) {
-    const cv::Mat scene = random_texture({700, 560}, 300 + trial);
+    const cv::Mat scene = smooth_random_texture({700, 560}, 300 + trial, kTextureSigma);
     const int dx = shift(rng), dy = shift(rng);
     const cv::Rect window(150, 120, 383 - trial, 291 + trial);
     const std::optional<TranslationEstimate> estimate =
@@ -61,7 +56,7 @@ TEST(EstimateTranslation, CoarseEstimateTellsSmallFromLargeMoves) {
   std::uniform_int_distribution<int> small(-2, 2), large(8, 25), sign(0, 1);
   const cv::Rect window(100, 100, 190, 150);
   for (int trial = 0; trial < 20; ++trial) {
-    const cv::Mat scene = random_texture({400, 360}, 500 + trial);
+    const cv::Mat scene = smooth_random_texture({400, 360}, 500 + trial, kTextureSigma);
     const cv::Point still(small(rng), small(rng));
     const cv::Point moved(large(rng) * (sign(rng) ? 1 : -1), small(rng) * 4);
     const std::optional<TranslationEstimate> small_move =
@@ -81,7 +76,7 @@ TEST(EstimateTranslation, AReusedEstimatorGivesWhatAFreshOneGives) {
   std::uniform_int_distribution<int> shift(-12, 12), side(60, 260);
   TranslationEstimator reused;
   for (int trial = 0; trial < 30; ++trial) {
-    const cv::Mat scene = random_texture({420, 420}, 700 + trial);
+    const cv::Mat scene = smooth_random_texture({420, 420}, 700 + trial, kTextureSigma);
     const cv::Rect window(60, 60, side(rng), side(rng));
     const cv::Mat current = scene(window - cv::Point(shift(rng), shift(rng)));
     const int max_side = trial % 3 == 0 ? 64 : 200;
@@ -99,7 +94,7 @@ TEST(EstimateTranslation, AReusedEstimatorGivesWhatAFreshOneGives) {
 // A full-HD window averaged down to 64 px a side (blocks of 32): the shift, scaled back, within
 // the blocks' size.
 TEST(EstimateTranslation, AveragesAFullHDWindowDownToTheSideAskedFor) {
-  const cv::Mat scene = random_texture({2000, 1160}, 31);
+  const cv::Mat scene = smooth_random_texture({2000, 1160}, 31, kTextureSigma);
   const cv::Rect window(40, 40, 1920, 1080);
   const std::optional<TranslationEstimate> estimate =
       estimate_translation(scene(window), scene(window - cv::Point(24, -16)), 64);
@@ -109,7 +104,7 @@ TEST(EstimateTranslation, AveragesAFullHDWindowDownToTheSideAskedFor) {
 }
 
 TEST(EstimateTranslation, RejectsMismatchedOrTinyImages) {
-  const cv::Mat a = random_texture({64, 64}, 1);
+  const cv::Mat a = smooth_random_texture({64, 64}, 1, kTextureSigma);
   EXPECT_FALSE(estimate_translation(a, a(cv::Rect(0, 0, 32, 64)).clone()).has_value());
   EXPECT_FALSE(estimate_translation(a(cv::Rect(0, 0, 8, 8)), a(cv::Rect(8, 8, 8, 8))).has_value());
   cv::Mat color;

@@ -5,18 +5,13 @@
 #include <opencv2/imgproc.hpp>
 #include <vector>
 
+#include "scbt/tracker/texture_test_util.h"
+
 namespace scbt {
 namespace {
 
-// A random smooth texture: surroundings alike only where they are the same.
-cv::Mat random_texture(cv::Size size, unsigned seed) {
-  cv::Mat noise(size, CV_8U);
-  cv::RNG rng(seed);
-  rng.fill(noise, cv::RNG::UNIFORM, 0, 256);
-  cv::GaussianBlur(noise, noise, cv::Size(0, 0), 4.0);
-  cv::normalize(noise, noise, 0, 255, cv::NORM_MINMAX);
-  return noise;
-}
+// Texture smoothing (px): coarse enough to survive the 32 x 32 thumbnails.
+constexpr double kTextureSigma = 4.0;
 
 // A window of 160 x 110 px, as the tracker keeps around an object of 100 x 60 px.
 const cv::Rect kWindow(100, 100, 160, 110);
@@ -34,7 +29,7 @@ cv::Mat with_object(const cv::Mat& scene) {
 
 // The camera turned a little: object and surroundings moved together.
 TEST(CoarseViewCorrelation, TheSameViewMovedAFewPixelsIsAlike) {
-  const cv::Mat scene = with_object(random_texture({480, 360}, 3));
+  const cv::Mat scene = with_object(smooth_random_texture({480, 360}, 3, kTextureSigma));
   const cv::Mat reference = scene(kWindow);
   const cv::Mat current = scene(kWindow + cv::Point(12, -8));
   EXPECT_GT(coarse_view_correlation(reference, current), 0.9);
@@ -42,8 +37,9 @@ TEST(CoarseViewCorrelation, TheSameViewMovedAFewPixelsIsAlike) {
 }
 
 TEST(CoarseViewCorrelation, AnotherViewIsNotAlike) {
-  const cv::Mat reference = with_object(random_texture({480, 360}, 3))(kWindow);
-  const cv::Mat other = random_texture({480, 360}, 4)(kWindow);
+  const cv::Mat reference =
+      with_object(smooth_random_texture({480, 360}, 3, kTextureSigma))(kWindow);
+  const cv::Mat other = smooth_random_texture({480, 360}, 4, kTextureSigma)(kWindow);
   EXPECT_LT(coarse_view_correlation(reference, other), 0.6);
   EXPECT_LT(surroundings_correlation(reference, other, kObject), 0.6);
 }
@@ -51,7 +47,7 @@ TEST(CoarseViewCorrelation, AnotherViewIsNotAlike) {
 // The surroundings moved far away (a cut) while a look-alike sits where the object was: the whole
 // window stays alike (the bright object dominates it), the surroundings without it do not.
 TEST(CoarseViewCorrelation, ALookAlikeInPlaceIsToldByTheSurroundings) {
-  const cv::Mat scene = random_texture({480, 360}, 5);
+  const cv::Mat scene = smooth_random_texture({480, 360}, 5, kTextureSigma);
   const cv::Mat reference = with_object(scene)(kWindow);
   // The look-alike at the object's place in the window; the surroundings from 150 px away.
   cv::Mat moved = scene.clone();
@@ -75,7 +71,8 @@ TEST(CoarseViewCorrelation, FlatSurroundingsAreAlike) {
 }
 
 TEST(CoarseViewCorrelation, AFlatViewIsNotAlike) {
-  const cv::Mat reference = with_object(random_texture({480, 360}, 3))(kWindow);
+  const cv::Mat reference =
+      with_object(smooth_random_texture({480, 360}, 3, kTextureSigma))(kWindow);
   const cv::Mat grey(kWindow.size(), CV_8U, cv::Scalar(128));
   EXPECT_EQ(coarse_view_correlation(reference, grey), 0.0);
   EXPECT_EQ(surroundings_correlation(reference, grey, kObject), 0.0);
