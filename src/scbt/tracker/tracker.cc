@@ -120,6 +120,7 @@ void Tracker::init(const cv::Mat& frame, const Polygon& polygon) {
   motion_.update(boundary_);
   adapted_first_ = false;
   noise_sigma_ = -1.0;
+  appearance_pending_ = false;
   appearance_.remember(frame, boundary_);
   shape_memory_.restart(boundary_);
   monitor_.reset(
@@ -241,9 +242,14 @@ const cv::Mat& Tracker::smooth_if_noisy(const cv::Mat& gray, cv::Mat* smoothed,
   return *smoothed;
 }
 
+bool Tracker::keeps_motion_reference() const {
+  return options_.recover_by_motion || (options_.predict_motion && options_.measure_motion);
+}
+
 void Tracker::remember_reference(const cv::Mat& frame, const Attempt& a) {
   // The reference is the window the image motion is measured against (recovery, prediction).
-  if (!options_.recover_by_motion && !(options_.predict_motion && options_.measure_motion)) return;
+  if (!keeps_motion_reference()) return;
+  settle_appearance();
   reference_roi_ = a.roi;
   if (frame.channels() == 1) {
     // Grey input is a view of the caller's frame: a deep copy, into the reused buffer.
@@ -268,7 +274,28 @@ void Tracker::report_attempt(const Attempt& a, TrackResult* result) {
   }
 }
 
+void Tracker::remember_appearance(const cv::Mat& frame) {
+  if (!options_.predict_motion || !options_.confirm_motion) return;
+  appearance_pending_ = false;
+  if (keeps_motion_reference() && !reference_gray_.empty()) {
+    appearance_boundary_ = boundary_;
+    appearance_pending_ = true;
+  } else {
+    appearance_.remember(frame, boundary_);
+  }
+}
+
+void Tracker::settle_appearance() {
+  if (!appearance_pending_) return;
+  appearance_pending_ = false;
+  // The reference window holds the boundary with the profile's few pixels either side (it is
+  // the search band's), unless the frame's edge cuts both alike.
+  for (Point& p : appearance_boundary_) p -= Point(reference_roi_.x, reference_roi_.y);
+  appearance_.remember(reference_gray_, appearance_boundary_);
+}
+
 bool Tracker::confirmed(const cv::Mat& frame, const Polygon& moved, const Polygon& unmoved) {
+  settle_appearance();
   const double agreement = appearance_.agreement(frame, moved);
   return agreement >= options_.min_motion_agreement &&
          agreement > appearance_.agreement(frame, unmoved);
@@ -459,9 +486,11 @@ TrackResult Tracker::track(const cv::Mat& frame) {
     if (result.confidence >= options_.loss.tracking_confidence && gray_roi_ == a->roi) {
       measure_edge_blur(gray_, a->roi.tl());
     }
+    // This frame's appearance replaces a pending one, which need not be read first.
+    if (options_.predict_motion && options_.confirm_motion) appearance_pending_ = false;
     remember_reference(frame, *a);
     motion_.update(boundary_);
-    if (options_.predict_motion && options_.confirm_motion) appearance_.remember(frame, boundary_);
+    remember_appearance(frame);
   } else {
     result.held = true;
     check_view_cut(frame, result);

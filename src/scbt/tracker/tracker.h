@@ -112,6 +112,10 @@ class Tracker {
   Polygon predicted_;     // where this frame's search looks (reused buffer)
   Polygon extrapolated_;  // where the boundary's last velocity puts it (place_by_image_motion)
   BoundaryAppearance appearance_;  // confirms predictions (TrackerOptions::confirm_motion)
+  // A prediction needs confirming on few frames: the last tracked boundary's appearance is then
+  // read from the motion reference (reference_gray_, kept anyway) rather than on every frame.
+  bool appearance_pending_ = false;
+  Polygon appearance_boundary_;  // the boundary whose appearance is pending (frame coordinates)
 
   // One pass of the per-frame pipeline searching around `prior`. Two are kept (the first try
   // and a recovery search) and reused frame to frame, so that steady-state tracking allocates
@@ -191,6 +195,13 @@ class Tracker {
   // Whether `moved` (a predicted placement of the boundary) agrees with its appearance better
   // than `unmoved` does, and at least by TrackerOptions::min_motion_agreement.
   bool confirmed(const cv::Mat& frame, const Polygon& moved, const Polygon& unmoved);
+  // After boundary_ was tracked on `frame`: the appearance that confirms the next predictions,
+  // read now, or left pending when the motion reference keeps this frame's window.
+  void remember_appearance(const cv::Mat& frame);
+  // Reads a pending appearance from the motion reference (before the reference moves on).
+  void settle_appearance();
+  // Whether remember_reference keeps the windows the image motion is measured against.
+  bool keeps_motion_reference() const;
   static void add_retry_times(const Attempt& retry, TrackResult* result);
   // The evidence (confidence.h) of `chosen`, the cycle attempt `a` chose around `previous`; the
   // grey window gray_ must still be a's (tracker_lost.cc). `descriptor`, when given, gets the

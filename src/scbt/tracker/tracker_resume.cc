@@ -53,7 +53,10 @@ void Tracker::resume_tracking_from(const cv::Mat& frame, Polygon boundary, Track
   if (reference_roi_.empty()) reference_roi_ = cv::Rect(cv::Point(0, 0), frame_size_);
   to_exposed_gray(frame(reference_roi_), &cut_gray_);
   cut_gray_.copyTo(reference_gray_);  // a deep copy: grey input is a view of the caller's frame
-  if (options_.predict_motion && options_.confirm_motion) appearance_.remember(frame, boundary_);
+  if (options_.predict_motion && options_.confirm_motion) {
+    appearance_pending_ = false;
+    appearance_.remember(frame, boundary_);
+  }
   shape_memory_.restart(boundary_);
   result->boundary = boundary_;
 }
