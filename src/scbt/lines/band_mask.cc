@@ -6,107 +6,180 @@
 #include <limits>
 #include <vector>
 
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
+
+#include "scbt/geometry/avx2_clones.h"
+
 namespace scbt {
 namespace {
 
+constexpr double kInfinity = std::numeric_limits<double>::infinity();
+
 // The columns x of row y where a linear constraint low <= k x + m0 + m1 y <= high holds, as
-// x in [from0 + from1 y, to0 + to1 y] (precomputed per edge so that a row costs no division),
-// or, when k is 0, all columns or none depending on the row.
+// x in [from0 + from1 y, to0 + to1 y] on the rows that pass holds_on_row (precomputed per edge so
+// that a row costs no division and no branch). When k is 0 the bounds are infinite and the row
+// test decides; otherwise the row test always passes.
 struct RowConstraint {
   bool depends_on_x = false;
-  double from0 = 0.0, from1 = 0.0, to0 = 0.0, to1 = 0.0;
-  double m0 = 0.0, m1 = 0.0, low = 0.0, high = 0.0;  // for k == 0
+  double from0 = -kInfinity, from1 = 0.0, to0 = kInfinity, to1 = 0.0;
+  double m0 = 0.0, m1 = 0.0, low = 0.0, high = 0.0;
 
-  RowConstraint(double k, double m0_, double m1_, double low_, double high_)
-      : m0(m0_), m1(m1_), low(low_), high(high_) {
-    if (std::abs(k) < 1e-12) return;
-    depends_on_x = true;
-    // (low - m0 - m1 y) / k and (high - m0 - m1 y) / k, in increasing order.
-    from0 = (low - m0) / k, from1 = -m1 / k;
-    to0 = (high - m0) / k, to1 = -m1 / k;
-    if (k < 0.0) std::swap(from0, to0);
-  }
-  // Intersects [*from, *to] with the constraint's columns on row y.
-  void clip(double y, double* from, double* to) const {
-    if (!depends_on_x) {
-      const double value = m0 + m1 * y;
-      if (value < low || value > high) *from = 1.0, *to = 0.0;
+  RowConstraint(double k, double m0_, double m1_, double low_, double high_) {
+    if (std::abs(k) < 1e-12) {
+      m0 = m0_, m1 = m1_, low = low_, high = high_;
       return;
     }
-    *from = std::max(*from, from0 + from1 * y);
-    *to = std::min(*to, to0 + to1 * y);
+    depends_on_x = true;
+    // (low - m0 - m1 y) / k and (high - m0 - m1 y) / k, in increasing order.
+    from0 = (low_ - m0_) / k, from1 = -m1_ / k;
+    to0 = (high_ - m0_) / k, to1 = -m1_ / k;
+    if (k < 0.0) std::swap(from0, to0);
+  }
+  double from(double y) const { return from0 + from1 * y; }
+  double to(double y) const { return to0 + to1 * y; }
+  bool holds_on_row(double y) const {
+    const double value = m0 + m1 * y;
+    return !((value < low) | (value > high));  // both compared, so that it needs no branch
   }
 };
 
-// Grows [*from, *to] to take in the row's chord of the disc of squared radius r2 around c.
-void add_disc_chord(const Point& c, double y, double r2, double* from, double* to) {
-  const double dy = y - c.y;
-  if (dy * dy > r2) return;
-  const double half = std::sqrt(r2 - dy * dy);
-  *from = std::min(*from, c.x - half);
-  *to = std::max(*to, c.x + half);
+// Square roots in place, two per instruction where SSE2 allows: std::sqrt in a loop does not
+// vectorise, as it may set errno. Both round correctly, so the results are the same.
+inline void sqrt_in_place(double* values, int count) {
+  int i = 0;
+#if defined(__SSE2__)
+  for (; i + 2 <= count; i += 2) _mm_storeu_pd(values + i, _mm_sqrt_pd(_mm_loadu_pd(values + i)));
+#endif
+  for (; i < count; ++i) values[i] = std::sqrt(values[i]);
 }
 
-struct RowInterval {
-  int row, first, last;  // columns first .. last of `row`
-};
-
-// Appends, row by row, the pixels within `radius` of segment pq or of the disc around q, but
-// not those only the disc around p reaches: around a closed polyline every vertex is the end q
-// of one edge, so each vertex disc is computed once, and the union is the same. The segment's
-// rectangle and q's disc are a convex set (half a capsule), so each row holds one interval.
-void append_half_capsule(const Point& p, const Point& q, double radius, cv::Size size,
-                         std::vector<RowInterval>* out, std::vector<int>* last_of_row) {
-  const int width = size.width;
-  const double r2 = radius * radius;
+// The rows of the window that the half capsule of edge pq (below) can reach, a row more each way
+// against rounding: q's disc, and the rectangle, whose corners lie r |d.x| / |d| above and below
+// the segment's ends. Empty when *top > *bottom.
+void half_capsule_rows(const Point& p, const Point& q, double radius, int height, int* top,
+                       int* bottom) {
   const Point d = q - p;
   const double length = std::sqrt(d.x * d.x + d.y * d.y);
-  // Rows it can reach (a row more each way against rounding): q's disc, and the rectangle,
-  // whose corners lie r |d.x| / |d| above and below the segment's ends.
   double reach_top = q.y - radius, reach_bottom = q.y + radius;
   if (length > 0.0) {
     const double rise = radius * std::abs(d.x) / length;
     reach_top = std::min(reach_top, std::min(p.y, q.y) - rise);
     reach_bottom = std::max(reach_bottom, std::max(p.y, q.y) + rise);
   }
-  const int top = static_cast<int>(std::max(0.0, std::ceil(reach_top) - 1.0));
-  const int bottom = static_cast<int>(std::min(size.height - 1.0, std::floor(reach_bottom) + 1.0));
+  *top = static_cast<int>(std::max(0.0, std::ceil(reach_top) - 1.0));
+  *bottom = static_cast<int>(std::min(height - 1.0, std::floor(reach_bottom) + 1.0));
+}
+
+// The columns first[i] .. last[i] (empty when first[i] > last[i]) of row top + i, for i below
+// `count`, within `radius` of segment pq or of the disc around q, but not those only the disc
+// around p reaches: around a closed polyline every vertex is the end q of one edge, so each vertex
+// disc is computed once, and the union is the same. The segment's rectangle and q's disc are a
+// convex set (half a capsule), so each row holds one interval. `from` and `to` are scratch of
+// `count` doubles. Whole passes over the rows, without branches, so that they vectorise.
+SCBT_AVX2_CLONES void half_capsule_columns(const Point& p, const Point& q, double radius, int width,
+                                           int top, int count, double* from, double* to, int* first,
+                                           int* last) {
+  const double r2 = radius * radius;
+  const Point d = q - p;
+  const double length = std::sqrt(d.x * d.x + d.y * d.y);
   // The rectangle between the discs: 0 <= (x - p).d <= |d|^2 and |(x - p) x d| <= r |d|, both
   // linear in the column x and the row y.
   const RowConstraint along(d.x, -p.x * d.x - p.y * d.y, d.y, 0.0, length * length);
   const RowConstraint across(d.y, -p.x * d.y + p.y * d.x, -d.x, -radius * length, radius * length);
-  for (int y = top; y <= bottom; ++y) {
-    double from = std::numeric_limits<double>::infinity();
-    double to = -from;
-    if (length > 0.0) {
-      double low = -std::numeric_limits<double>::infinity(), high = -low;
-      along.clip(y, &low, &high);
-      across.clip(y, &low, &high);
-      if (low <= high) from = low, to = high;
+  const bool has_rectangle = length > 0.0;
+  const double qx = q.x, qy = q.y;  // not reloaded after each store (the arrays might alias q)
+  // The half chord of q's disc on each row, in `from` (0 off the disc, where it is not used).
+  double* half = from;
+  for (int i = 0; i < count; ++i) {
+    const double dy = (top + i) - qy;
+    half[i] = std::max(r2 - dy * dy, 0.0);
+  }
+  sqrt_in_place(half, count);
+  // Clamped to [-1, width], so that the conversions below round as ceil and floor would (and
+  // stay in range even on empty rows). Comparisons all run on every row, results then picked: a
+  // conditional one could trap, which keeps the compiler from vectorising.
+  const double right = width;
+  auto bound_row = [&](int i, bool row_tests) {
+    const double y = top + i;
+    const double low = std::max(along.from(y), across.from(y));
+    const double high = std::min(along.to(y), across.to(y));
+    const bool in_rectangle =
+        row_tests ? has_rectangle & along.holds_on_row(y) & across.holds_on_row(y) & (low <= high)
+                  : low <= high;
+    double row_from = in_rectangle ? low : kInfinity;
+    double row_to = in_rectangle ? high : -kInfinity;
+    const double dy = y - qy;
+    const bool in_disc = dy * dy <= r2;
+    const double disc_from = std::min(row_from, qx - half[i]);
+    const double disc_to = std::max(row_to, qx + half[i]);
+    row_from = in_disc ? disc_from : row_from;
+    row_to = in_disc ? disc_to : row_to;
+    from[i] = std::min(std::max(row_from, -1.0), right);
+    to[i] = std::max(std::min(row_to, right), -1.0);
+  };
+  // On slanted edges, most of them, the row tests always pass: a loop without them.
+  if (has_rectangle && along.depends_on_x && across.depends_on_x) {
+    for (int i = 0; i < count; ++i) bound_row(i, false);
+  } else {
+    for (int i = 0; i < count; ++i) bound_row(i, true);
+  }
+  for (int i = 0; i < count; ++i) {
+    int column = static_cast<int>(from[i]);  // truncated towards 0
+    first[i] = std::max(column + (column < from[i]), 0);
+    column = static_cast<int>(to[i]);
+    last[i] = std::min(column - (column > to[i]), width - 1);
+  }
+}
+
+// Each row's union so far, as the spans the band already holds plus two open intervals: the one
+// the latest edges grew and another (empty: first above last + 1, as kEmpty and -kEmpty are against
+// any column). Neighbouring edges' intervals on a row mostly overlap or touch, and a band around a
+// convex shape crosses a row twice, so the two open intervals take in most of them.
+constexpr int kEmpty = std::numeric_limits<int>::max() / 2;
+struct OpenIntervals {
+  std::vector<int> first[2], last[2];  // [0]: the latest, [1]: the other
+};
+
+// Merges the columns first[k] .. last[k] of row top + k (empty when first[k] > last[k]), k below
+// `count`, into the rows' open intervals (the arrays from row `top` on): into one it overlaps or
+// touches, else it becomes the latest, the latest the other, and the other goes to the band (which
+// merges spans), which is rare. Branchless passes that vectorise (the arrays are distinct, so
+// marked restrict), but for the rare rows that give a span to the band.
+SCBT_AVX2_CLONES void merge_rows(const int* __restrict first, const int* __restrict last, int top,
+                                 int count, int* __restrict latest_first,
+                                 int* __restrict latest_last, int* __restrict other_first,
+                                 int* __restrict other_last, RowSpans* band) {
+  auto touches = [](int f, int l, int open_first, int open_last) {
+    return f <= open_last + 1 && open_first <= l + 1;
+  };
+  auto pushes_out = [&](int k) {  // the other interval, to the band
+    // `&`, not `&&`: every load unconditional, so no branch.
+    const int f = first[k], l = last[k], lf = latest_first[k], ll = latest_last[k];
+    const int of = other_first[k], ol = other_last[k];
+    return (f <= l) & (of <= ol) & ((f > ll + 1) | (lf > l + 1)) & ((f > ol + 1) | (of > l + 1));
+  };
+  int any_pushed_out = 0;  // usually none: a vectorised test spares the scalar pass
+  for (int k = 0; k < count; ++k) any_pushed_out |= pushes_out(k);
+  if (any_pushed_out) {
+    for (int k = 0; k < count; ++k) {
+      if (!pushes_out(k)) continue;
+      band->add(top + k, other_first[k], other_last[k]);
+      other_first[k] = kEmpty, other_last[k] = -kEmpty;
     }
-    add_disc_chord(q, y, r2, &from, &to);
-    // Clamped first, so that the conversions below round as ceil and floor would (without
-    // SSE4.1, std::ceil and std::floor are calls, most of this loop's time).
-    from = std::max(from, -1.0);
-    to = std::min(to, 1.0 * width);
-    if (!(from <= to)) continue;
-    int first = static_cast<int>(from), last = static_cast<int>(to);  // truncated towards 0
-    first += first < from;
-    last -= last > to;
-    first = std::max(first, 0);
-    last = std::min(last, width - 1);
-    if (first > last) continue;
-    // Neighbouring edges' intervals on a row mostly overlap: the previous one of this row
-    // takes in this one when they overlap or touch, which leaves few for band_spans to sort.
-    int& previous = (*last_of_row)[y];
-    RowInterval* merged = previous >= 0 ? &(*out)[previous] : nullptr;
-    if (merged != nullptr && first <= merged->last + 1 && merged->first <= last + 1) {
-      merged->first = std::min(merged->first, first);
-      merged->last = std::max(merged->last, last);
-    } else {
-      previous = static_cast<int>(out->size());
-      out->push_back({y, first, last});
-    }
+  }
+  for (int k = 0; k < count; ++k) {
+    const int f = first[k], l = last[k];
+    const int lf = latest_first[k], ll = latest_last[k], of = other_first[k], ol = other_last[k];
+    const bool empty = f > l;
+    const bool into_latest = !empty && touches(f, l, lf, ll);
+    const bool into_other = !empty && !into_latest && touches(f, l, of, ol);
+    const bool shifts = !empty && !into_latest && !into_other;
+    latest_first[k] = into_latest ? std::min(lf, f) : shifts ? f : lf;
+    latest_last[k] = into_latest ? std::max(ll, l) : shifts ? l : ll;
+    other_first[k] = into_other ? std::min(of, f) : shifts ? lf : of;
+    other_last[k] = into_other ? std::max(ol, l) : shifts ? ll : ol;
   }
 }
 
@@ -124,38 +197,36 @@ void band_spans(const Polygon& boundary, cv::Point offset, double radius, cv::Si
     return Point(std::isnan(x) ? kLimit : std::clamp(x, -kLimit, kLimit),
                  std::isnan(y) ? kLimit : std::clamp(y, -kLimit, kLimit));
   };
-  thread_local std::vector<RowInterval> intervals, by_row;
-  thread_local std::vector<int> row_start, last_of_row;
-  intervals.clear();
-  last_of_row.assign(size.height, -1);
+  const int width = size.width, height = size.height;
+  thread_local std::vector<int> first, last;
+  thread_local std::vector<double> from, to;
+  thread_local OpenIntervals open;
+  for (int slot = 0; slot < 2; ++slot) {
+    open.first[slot].assign(height, kEmpty);
+    open.last[slot].assign(height, -kEmpty);
+  }
+  first.resize(height);
+  last.resize(height);
+  from.resize(height);
+  to.resize(height);
   const size_t n = boundary.size();
   for (size_t i = 0; i < n; ++i) {
-    append_half_capsule(local(boundary[i]), local(boundary[(i + 1) % n]), radius, size, &intervals,
-                        &last_of_row);
+    const Point p = local(boundary[i]), q = local(boundary[(i + 1) % n]);
+    int top, bottom;
+    half_capsule_rows(p, q, radius, height, &top, &bottom);
+    if (top > bottom) continue;
+    const int count = bottom - top + 1;
+    half_capsule_columns(p, q, radius, width, top, count, from.data(), to.data(), first.data(),
+                         last.data());
+    merge_rows(first.data(), last.data(), top, count, open.first[0].data() + top,
+               open.last[0].data() + top, open.first[1].data() + top, open.last[1].data() + top,
+               band);
   }
-  // Grouped by row (counting sort), then each row's handful sorted by column and merged: cheaper
-  // than merging each interval into the row's spans as it comes.
-  row_start.assign(static_cast<size_t>(size.height) + 1, 0);
-  for (const RowInterval& i : intervals) ++row_start[i.row + 1];
-  for (int r = 0; r < size.height; ++r) row_start[r + 1] += row_start[r];
-  by_row.resize(intervals.size());
-  for (const RowInterval& i : intervals) by_row[row_start[i.row]++] = i;
-  for (int r = size.height; r > 0; --r) row_start[r] = row_start[r - 1];
-  row_start[0] = 0;
-  for (int r = 0; r < size.height; ++r) {
-    RowInterval* begin = by_row.data() + row_start[r];
-    RowInterval* end = by_row.data() + row_start[r + 1];
-    for (RowInterval* i = begin + 1; i < end; ++i) {  // insertion sort by first column
-      const RowInterval moving = *i;
-      RowInterval* at = i;
-      for (; at > begin && (at - 1)->first > moving.first; --at) *at = *(at - 1);
-      *at = moving;
-    }
-    for (const RowInterval* i = begin; i < end;) {
-      const int first = i->first;
-      int last = i->last;
-      for (++i; i < end && i->first <= last + 1; ++i) last = std::max(last, i->last);
-      band->add(r, first, last);
+  for (int y = 0; y < height; ++y) {
+    for (int slot = 0; slot < 2; ++slot) {
+      if (open.first[slot][y] <= open.last[slot][y]) {
+        band->add(y, open.first[slot][y], open.last[slot][y]);
+      }
     }
   }
 }
