@@ -72,6 +72,10 @@ void EdgeBlurOptions::check() const {
     throw std::invalid_argument("edge blur update_weight must be in (0, 1], got " +
                                 std::to_string(update_weight));
   }
+  if (measure_every < 1 || measure_every > 1000) {
+    throw std::invalid_argument("edge blur measure_every must be in 1..1000, got " +
+                                std::to_string(measure_every));
+  }
   if (samples < 1 || samples > 10000 || min_edges < 1 || min_edges > samples) {
     throw std::invalid_argument("edge blur needs 1 <= min_edges <= samples <= 10000");
   }

@@ -28,6 +28,10 @@ struct EdgeBlurOptions {
   // Weight of a new estimate in the running one: a camera's blur changes over frames, one
   // frame's estimate is noisy.
   double update_weight = 0.25;
+  // Confidently tracked frames from one estimate to the next: blur changes over many frames, an
+  // estimate costs as much as a few percent of a frame. The running estimate keeps its pace (its
+  // weight is that of update_weight applied on each frame).
+  int measure_every = 2;
   // Points read along the boundary, of which at least min_edges must cross a clear step.
   int samples = 32;
   int min_edges = 8;

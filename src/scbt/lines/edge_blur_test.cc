@@ -137,6 +137,9 @@ TEST(EdgeBlurOptions, RejectsValuesOutOfRange) {
   options.update_weight = 0.0;
   EXPECT_THROW(options.check(), std::invalid_argument);
   options = EdgeBlurOptions();
+  options.measure_every = 0;
+  EXPECT_THROW(options.check(), std::invalid_argument);
+  options = EdgeBlurOptions();
   options.min_edges = options.samples + 1;
   EXPECT_THROW(options.check(), std::invalid_argument);
 }

@@ -92,6 +92,7 @@ void Tracker::to_exposed_gray(const cv::Mat& part, cv::Mat* gray) const {
 }
 
 void Tracker::measure_edge_blur(const cv::Mat& gray, cv::Point window_tl) {
+  blur_frames_waited_ = 0;
   if (!options_.blur.adapt) return;
   // A clear step: twice the smallest one the detector sees (a Sobel response of the threshold is
   // a step of about a quarter of it).
@@ -99,9 +100,10 @@ void Tracker::measure_edge_blur(const cv::Mat& gray, cv::Point window_tl) {
       estimate_edge_blur(gray, window_tl, boundary_, step_threshold_ / 2.0, options_.blur);
   if (!(sigma > 0.0)) return;
   // A camera's blur changes over frames; one frame's estimate is noisy.
-  edge_blur_sigma_ = edge_blur_sigma_ > 0.0 ? edge_blur_sigma_ + options_.blur.update_weight *
-                                                                     (sigma - edge_blur_sigma_)
-                                            : sigma;
+  const double weight =
+      1.0 - std::pow(1.0 - options_.blur.update_weight, options_.blur.measure_every);
+  edge_blur_sigma_ =
+      edge_blur_sigma_ > 0.0 ? edge_blur_sigma_ + weight * (sigma - edge_blur_sigma_) : sigma;
 }
 
 void Tracker::init(const cv::Mat& frame, const Polygon& polygon) {
@@ -483,7 +485,8 @@ TrackResult Tracker::track(const cv::Mat& frame) {
     result.cost = a->choice->cost;
     result.area_similarity = a->choice->similarity;
     // Before the motion reference takes the grey window (the chosen attempt's).
-    if (result.confidence >= options_.loss.tracking_confidence && gray_roi_ == a->roi) {
+    if (result.confidence >= options_.loss.tracking_confidence && gray_roi_ == a->roi &&
+        ++blur_frames_waited_ >= options_.blur.measure_every) {
       measure_edge_blur(gray_, a->roi.tl());
     }
     // This frame's appearance replaces a pending one, which need not be read first.

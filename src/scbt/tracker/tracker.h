@@ -178,6 +178,7 @@ class Tracker {
   // boundaries (< 0: none yet), which scales the thresholds (edge_blur_gain), and its update from
   // `gray` (the window at `window_tl`).
   double edge_blur_sigma_ = -1.0;
+  int blur_frames_waited_ = 0;  // confidently tracked frames since the last estimate
   void measure_edge_blur(const cv::Mat& gray, cv::Point window_tl);
   // TrackerOptions::smooth_noisy_frames: `gray` smoothed into *smoothed when the camera's noise
   // (Immerkaer's estimate, refreshed every few frames) calls for it, the detector's thresholds
