@@ -46,7 +46,8 @@ void Tracker::check_view_cut(const cv::Mat& frame, const TrackResult& result) {
                         result.evidence.shape_change > loss.match_shape_distance;
   if (monitor_.state() != TrackState::kTracking || !surprise || reference_gray_.empty()) return;
   to_exposed_gray(frame(reference_roi_), &cut_gray_);
-  if (coarse_view_correlation(reference_gray_, cut_gray_) < loss.cut_correlation) {
+  const ViewComparison views(reference_gray_, cut_gray_);
+  if (views.whole() < loss.cut_correlation) {
     monitor_.note_view_cut();
     return;
   }
@@ -54,7 +55,7 @@ void Tracker::check_view_cut(const cv::Mat& frame, const TrackResult& result) {
   // taken), in the window's pixels.
   Polygon in_window = boundary_;
   for (Point& p : in_window) p -= Point(reference_roi_.x, reference_roi_.y);
-  if (surroundings_correlation(reference_gray_, cut_gray_, in_window) < loss.cut_correlation) {
+  if (views.surroundings(in_window) < loss.cut_correlation) {
     monitor_.note_view_cut();
   }
 }

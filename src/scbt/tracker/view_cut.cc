@@ -50,27 +50,23 @@ double masked_correlation(const cv::Mat& a, const cv::Mat& b, const cv::Mat& use
   return best;
 }
 
-void thumbnails(const cv::Mat& reference, const cv::Mat& current, cv::Mat* a, cv::Mat* b) {
-  cv::resize(reference, *a, cv::Size(kThumb, kThumb), 0.0, 0.0, cv::INTER_AREA);
-  cv::resize(current, *b, cv::Size(kThumb, kThumb), 0.0, 0.0, cv::INTER_AREA);
-}
-
 }  // namespace
 
-double coarse_view_correlation(const cv::Mat& reference, const cv::Mat& current) {
-  cv::Mat a, b;
-  thumbnails(reference, current, &a, &b);
-  cv::Mat use(kThumb, kThumb, CV_8U, cv::Scalar(0));
-  use(cv::Rect(kMaxShift, kMaxShift, kInner, kInner)).setTo(255);
-  return masked_correlation(a, b, use, kInner * kInner);
+ViewComparison::ViewComparison(const cv::Mat& reference, const cv::Mat& current)
+    : reference_size_(reference.size()) {
+  cv::resize(reference, reference_cells_, cv::Size(kThumb, kThumb), 0.0, 0.0, cv::INTER_AREA);
+  cv::resize(current, current_cells_, cv::Size(kThumb, kThumb), 0.0, 0.0, cv::INTER_AREA);
 }
 
-double surroundings_correlation(const cv::Mat& reference, const cv::Mat& current,
-                                const Polygon& object) {
-  cv::Mat a, b;
-  thumbnails(reference, current, &a, &b);
-  const double sx = static_cast<double>(kThumb) / reference.cols;
-  const double sy = static_cast<double>(kThumb) / reference.rows;
+double ViewComparison::whole() const {
+  cv::Mat use(kThumb, kThumb, CV_8U, cv::Scalar(0));
+  use(cv::Rect(kMaxShift, kMaxShift, kInner, kInner)).setTo(255);
+  return masked_correlation(reference_cells_, current_cells_, use, kInner * kInner);
+}
+
+double ViewComparison::surroundings(const Polygon& object) const {
+  const double sx = static_cast<double>(kThumb) / reference_size_.width;
+  const double sy = static_cast<double>(kThumb) / reference_size_.height;
   std::vector<cv::Point> cells;
   for (const Point& p : object) cells.emplace_back(cvRound(p.x * sx), cvRound(p.y * sy));
   cv::Mat use(kThumb, kThumb, CV_8U, cv::Scalar(255));
@@ -78,9 +74,18 @@ double surroundings_correlation(const cv::Mat& reference, const cv::Mat& current
   cv::erode(use, use, cv::Mat());  // the object's edge blurs into the cells around it
   if (cv::countNonZero(use) < kMinSurroundingCells) return 1.0;
   cv::Scalar mean, spread;
-  cv::meanStdDev(a, mean, spread, use);
+  cv::meanStdDev(reference_cells_, mean, spread, use);
   if (spread[0] < kMinSurroundingSpread) return 1.0;
-  return masked_correlation(a, b, use, kMinSurroundingCells);
+  return masked_correlation(reference_cells_, current_cells_, use, kMinSurroundingCells);
+}
+
+double coarse_view_correlation(const cv::Mat& reference, const cv::Mat& current) {
+  return ViewComparison(reference, current).whole();
+}
+
+double surroundings_correlation(const cv::Mat& reference, const cv::Mat& current,
+                                const Polygon& object) {
+  return ViewComparison(reference, current).surroundings(object);
 }
 
 }  // namespace scbt

@@ -23,4 +23,16 @@ double coarse_view_correlation(const cv::Mat& reference, const cv::Mat& current)
 double surroundings_correlation(const cv::Mat& reference, const cv::Mat& current,
                                 const Polygon& object);
 
+// Both correlations of one pair of windows, which are averaged down once.
+class ViewComparison {
+ public:
+  ViewComparison(const cv::Mat& reference, const cv::Mat& current);
+  double whole() const;                              // coarse_view_correlation
+  double surroundings(const Polygon& object) const;  // surroundings_correlation
+
+ private:
+  cv::Mat reference_cells_, current_cells_;
+  cv::Size reference_size_;
+};
+
 }  // namespace scbt
