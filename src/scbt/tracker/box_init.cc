@@ -36,8 +36,9 @@ std::optional<Polygon> most_salient_boundary(const std::vector<Segment>& segment
 }
 
 Polygon Tracker::init_from_box(const cv::Mat& frame, const cv::Rect& box) {
+  scale_thresholds_to_exposure(frame);
   cv::Mat gray;
-  to_gray(frame, &gray);  // throws for a bad frame
+  to_exposed_gray(frame, &gray);  // throws for a bad frame
   const cv::Rect frame_rect(cv::Point(0, 0), frame.size());
   if (box.width < 8 || box.height < 8 || (box & frame_rect) != box) {
     throw std::invalid_argument("the box " + std::to_string(box.x) + "," + std::to_string(box.y) +
@@ -46,8 +47,6 @@ Polygon Tracker::init_from_box(const cv::Mat& frame, const cv::Rect& box) {
                                 std::to_string(frame.cols) + "x" + std::to_string(frame.rows) +
                                 " frame");
   }
-  scale_thresholds_to_exposure(frame);
-  to_exposed_gray(frame, &gray);
   const std::vector<Segment> segments = detector_->detect_in(gray(box), box.tl(), frame.size());
   const std::optional<Polygon> boundary =
       most_salient_boundary(segments, kMinBoxAreaShare * box.area(), options_.bdsp);
