@@ -304,6 +304,7 @@ bool Tracker::confirmed(const cv::Mat& frame, const Polygon& moved, const Polygo
 }
 
 Tracker::Attempt* Tracker::search(const cv::Mat& frame, TrackResult* result) {
+  found_smaller_ = false;
   if (options_.predict_motion && options_.measure_motion) {
     place_by_image_motion(frame);
   } else if (options_.predict_motion) {
@@ -376,6 +377,26 @@ Tracker::Attempt* Tracker::search(const cv::Mat& frame, TrackResult* result) {
       attempt(frame, scaled, retry, options_.min_area_similarity);
       add_retry_times(*retry, result);
       if (retry->choice) a = retry;
+    }
+  }
+
+  // Still nothing within the gate: an object that starts receding fast (a low frame rate, right
+  // after approaching) shrinks past the gate before its shrinking is sustained, and held frames
+  // never teach the motion model. One gate step smaller is searched; its boundary must keep the
+  // reference shape, as any second search's, and the outline it shrank from must be gone (a
+  // cycle inside the object, found while the object's own outline is missed, is not followed).
+  if (!a->choice && options_.predict_motion && options_.gate_sustained_shrink &&
+      monitor_.state() != TrackState::kLost) {
+    Attempt* smaller = &attempts_[1];
+    attempt(frame, predicted_, smaller, options_.min_area_similarity, /*adapt=*/false,
+            boundary_area_ * options_.min_area_similarity);
+    add_retry_times(*smaller, result);
+    if (smaller->choice) {
+      if (!smaller->assessed) assess(smaller, boundary_);
+      if (trusted(*smaller, /*adapted=*/true) && outline_left(*smaller, predicted_)) {
+        a = smaller;
+        found_smaller_ = true;
+      }
     }
   }
 
@@ -500,8 +521,9 @@ TrackResult Tracker::track(const cv::Mat& frame) {
     motion_.update_held();
   }
   // A found boundary's descriptor came with its evidence (assess): the monitor needs no other.
-  result.state = monitor_.update(boundary_, result.confidence, result.held, result.evidence,
-                                 result.held ? nullptr : &a->descriptor, result.recovered);
+  result.state =
+      monitor_.update(boundary_, result.confidence, result.held, result.evidence,
+                      result.held ? nullptr : &a->descriptor, result.recovered || found_smaller_);
   if (result.state == TrackState::kTracking) {
     keyframes_.offer(frame, boundary_);
     if (options_.shape_weight > 0.0) shape_memory_.remember(boundary_);

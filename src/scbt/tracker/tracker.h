@@ -145,9 +145,12 @@ class Tracker {
   void attempt(const cv::Mat& frame, const Polygon& prior, Attempt* a, double min_similarity,
                bool adapt = false, double gate_area = 0.0);
   // A tracking frame's search around the boundary: where it is (or its motion predicts it), then
-  // with its predicted growth, then where the image moved it. Returns the attempt to use (its
-  // choice empty when nothing qualified); `result` gets the times.
+  // with its predicted growth, then one gate step smaller, then where the image moved it. Returns
+  // the attempt to use (its choice empty when nothing qualified); `result` gets the times.
   Attempt* search(const cv::Mat& frame, TrackResult* result);
+  // Whether search() took a boundary below the area gate (a receding object): it is tracked only
+  // with the last confident shape and inside level, as a re-found one.
+  bool found_smaller_ = false;
   // Attempt a's chosen cycle (if any), its evidence against `previous` and its confidence; the
   // grey window gray_ must still be a's.
   void assess(Attempt* a, const Polygon& previous) const;
@@ -209,6 +212,10 @@ class Tracker {
   // shape_descriptor of `chosen`.
   BoundaryEvidence evidence_of(const Attempt& a, const Polygon& chosen, const Polygon& previous,
                                ShapeDescriptor* descriptor = nullptr) const;
+  // Whether `left` (a boundary the object may have shrunk away from) holds fewer clear edges in
+  // attempt a's window than a's chosen boundary (assessed): the object's outline left it, rather
+  // than a smaller cycle inside it being found while it is still there.
+  bool outline_left(const Attempt& a, const Polygon& left) const;
   // On a surprising frame after a tracked one (held, confidence below tracking, or a shape change
   // beyond a match): whether the view was cut (LossOptions::cut_correlation), told to the monitor.
   // Needs the motion reference unchanged (tracker_lost.cc).

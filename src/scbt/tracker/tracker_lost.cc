@@ -40,6 +40,11 @@ BoundaryEvidence Tracker::evidence_of(const Attempt& a, const Polygon& chosen,
   return evidence;
 }
 
+bool Tracker::outline_left(const Attempt& a, const Polygon& left) const {
+  const EdgeSamples there = sample_edges(left, gray_, a.roi.tl(), min_edge_step(step_threshold_));
+  return there.support < a.evidence.edge_support;
+}
+
 void Tracker::check_view_cut(const cv::Mat& frame, const TrackResult& result) {
   const LossOptions& loss = options_.loss;
   const bool surprise = result.held || result.confidence < loss.tracking_confidence ||
