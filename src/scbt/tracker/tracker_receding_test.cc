@@ -1,7 +1,9 @@
 // An object receding from a low-frame-rate camera: a dark bowl inside a bright rim shrinks by
 // 6 % of its area per frame, then by 13 %, beyond the area gate (Eq. 2, 0.9). The inner boundary
 // then fails the gate while the rim's outer one passes it; a gate that follows the steady
-// shrinking (TrackerOptions::gate_sustained_shrink) keeps the inner one.
+// shrinking (TrackerOptions::gate_sustained_shrink) keeps the inner one. And a plain object that
+// recedes by 13 % per frame right after approaching, before any shrinking is sustained: the
+// search one gate step smaller follows it.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -57,6 +59,39 @@ double worst_error_receding(bool gate_sustained_shrink, unsigned seed) {
   return worst;
 }
 
+// A textured table with a dark hexagon of `radius`, no rim.
+cv::Mat render_plain(double radius, unsigned seed) {
+  cv::Mat frame(480, 640, CV_8U);
+  cv::RNG rng(seed);
+  rng.fill(frame, cv::RNG::UNIFORM, 90, 200);
+  cv::GaussianBlur(frame, frame, cv::Size(0, 0), 3.0);
+  cv::fillPoly(frame, std::vector<std::vector<cv::Point>>{pixels(hexagon(kCentre, radius))},
+               cv::Scalar(30), cv::LINE_AA);
+  return frame;
+}
+
+// The largest mean vertex distance to the hexagon while it grows by 8 % of its area per frame
+// four times, then shrinks by 13.5 % six times.
+double worst_error_turning_back(bool gate_sustained_shrink, unsigned seed) {
+  TrackerOptions options;
+  options.gate_sustained_shrink = gate_sustained_shrink;
+  Tracker tracker(options);
+  double radius = 100.0;
+  tracker.init(render_plain(radius, seed), hexagon(kCentre, radius));
+  std::vector<double> steps(4, 1.04);
+  steps.insert(steps.end(), 6, 0.93);
+  double worst = 0.0;
+  for (const double step : steps) {
+    radius *= step;
+    const TrackResult r = tracker.track(render_plain(radius, seed + 1));
+    const Polygon truth = hexagon(kCentre, radius);
+    double sum = 0.0;
+    for (const Point& p : r.boundary) sum += distance_to_boundary(p, truth);
+    worst = std::max(worst, sum / static_cast<double>(r.boundary.size()));
+  }
+  return worst;
+}
+
 class RecedingTest : public ::testing::TestWithParam<unsigned> {};
 
 TEST_P(RecedingTest, SteadyShrinkingKeepsTheInnerBoundary) {
@@ -65,6 +100,14 @@ TEST_P(RecedingTest, SteadyShrinkingKeepsTheInnerBoundary) {
 
 TEST_P(RecedingTest, WithoutFollowingTheShrinkingTheRimIsTaken) {
   EXPECT_GT(worst_error_receding(false, GetParam()), 4.0);
+}
+
+TEST_P(RecedingTest, RecedingRightAfterApproachingIsFollowed) {
+  EXPECT_LT(worst_error_turning_back(true, GetParam()), 2.0);
+}
+
+TEST_P(RecedingTest, WithoutTheShrinkingSearchesTheTurnIsLost) {
+  EXPECT_GT(worst_error_turning_back(false, GetParam()), 4.0);
 }
 
 INSTANTIATE_TEST_SUITE_P(Seeds, RecedingTest, ::testing::Values(1u, 2u, 3u));
