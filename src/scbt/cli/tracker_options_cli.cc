@@ -59,7 +59,8 @@ void add_tracker_options(CLI::App* command, TrackerOptions* options, std::string
   command
       ->add_option("--gate-sustained-shrink", options->gate_sustained_shrink,
                    "With --predict-motion: when the boundary shrinks steadily, the area gate "
-                   "compares candidates with its shrunken area (true/false)")
+                   "compares candidates with its shrunken area; when nothing passes the gate, "
+                   "one gate step smaller is searched (true/false)")
       ->capture_default_str();
   command
       ->add_option("--seed-stride", options->bdsp.seed_stride,

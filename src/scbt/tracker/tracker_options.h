@@ -54,7 +54,9 @@ struct TrackerOptions {
   bool fall_back_unmoved = true;
   // With predict_motion: when the boundary's last three growth rates all shrink it, the area
   // gate (Eq. 2) compares candidates with its area shrunk at the slowest of them, so that an
-  // object receding steadily at a low frame rate is not gated out.
+  // object receding steadily at a low frame rate is not gated out; and when nothing passes the
+  // gate, one gate step smaller is searched (its boundary kept only with the reference shape and
+  // inside level, and where the outline it shrank from lost its edges).
   bool gate_sustained_shrink = true;
   double min_predicted_move = 0.25;
   // An extrapolated placement (and the growth-scaled retry) is searched only where the image
