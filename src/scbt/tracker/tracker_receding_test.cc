@@ -37,28 +37,6 @@ cv::Mat render_bowl(double radius, unsigned seed) {
   return frame;
 }
 
-// The largest mean vertex distance to the inner boundary over the recession.
-double worst_error_receding(bool gate_sustained_shrink, unsigned seed) {
-  TrackerOptions options;
-  options.gate_sustained_shrink = gate_sustained_shrink;
-  Tracker tracker(options);
-  double radius = 120.0;
-  tracker.init(render_bowl(radius, seed), hexagon(kCentre, radius));
-  // Linear size per frame: 0.97 (area 0.94) four times, then 0.935 (area 0.874) six times.
-  std::vector<double> steps(4, 0.97);
-  steps.insert(steps.end(), 6, 0.935);
-  double worst = 0.0;
-  for (const double step : steps) {
-    radius *= step;
-    const TrackResult r = tracker.track(render_bowl(radius, seed + 1));
-    const Polygon truth = hexagon(kCentre, radius);
-    double sum = 0.0;
-    for (const Point& p : r.boundary) sum += distance_to_boundary(p, truth);
-    worst = std::max(worst, sum / static_cast<double>(r.boundary.size()));
-  }
-  return worst;
-}
-
 // A textured table with a dark hexagon of `radius`, no rim.
 cv::Mat render_plain(double radius, unsigned seed) {
   cv::Mat frame(480, 640, CV_8U);
@@ -70,26 +48,41 @@ cv::Mat render_plain(double radius, unsigned seed) {
   return frame;
 }
 
-// The largest mean vertex distance to the hexagon while it grows by 8 % of its area per frame
-// four times, then shrinks by 13.5 % six times.
-double worst_error_turning_back(bool gate_sustained_shrink, unsigned seed) {
+// The largest mean vertex distance to the hexagon of `radius` that `render` draws, while its
+// radius is multiplied by each of `steps` in turn.
+using Render = cv::Mat (*)(double radius, unsigned seed);
+double worst_error(Render render, double radius, const std::vector<double>& steps,
+                   bool gate_sustained_shrink, unsigned seed) {
   TrackerOptions options;
   options.gate_sustained_shrink = gate_sustained_shrink;
   Tracker tracker(options);
-  double radius = 100.0;
-  tracker.init(render_plain(radius, seed), hexagon(kCentre, radius));
-  std::vector<double> steps(4, 1.04);
-  steps.insert(steps.end(), 6, 0.93);
+  tracker.init(render(radius, seed), hexagon(kCentre, radius));
   double worst = 0.0;
   for (const double step : steps) {
     radius *= step;
-    const TrackResult r = tracker.track(render_plain(radius, seed + 1));
+    const TrackResult r = tracker.track(render(radius, seed + 1));
     const Polygon truth = hexagon(kCentre, radius);
     double sum = 0.0;
     for (const Point& p : r.boundary) sum += distance_to_boundary(p, truth);
     worst = std::max(worst, sum / static_cast<double>(r.boundary.size()));
   }
   return worst;
+}
+
+// The bowl's recession: linear size per frame 0.97 (area 0.94) four times, then 0.935 (area
+// 0.874) six times.
+double worst_error_receding(bool gate_sustained_shrink, unsigned seed) {
+  std::vector<double> steps(4, 0.97);
+  steps.insert(steps.end(), 6, 0.935);
+  return worst_error(render_bowl, 120.0, steps, gate_sustained_shrink, seed);
+}
+
+// The plain hexagon growing by 8 % of its area per frame four times, then shrinking by 13.5 %
+// six times.
+double worst_error_turning_back(bool gate_sustained_shrink, unsigned seed) {
+  std::vector<double> steps(4, 1.04);
+  steps.insert(steps.end(), 6, 0.93);
+  return worst_error(render_plain, 100.0, steps, gate_sustained_shrink, seed);
 }
 
 class RecedingTest : public ::testing::TestWithParam<unsigned> {};
