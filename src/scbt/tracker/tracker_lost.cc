@@ -5,17 +5,12 @@
 #include <opencv2/imgproc.hpp>
 
 #include "scbt/lines/line_detector.h"
+#include "scbt/tracker/stage_clock.h"
 #include "scbt/tracker/tracker.h"
 #include "scbt/tracker/view_cut.h"
 
 namespace scbt {
 namespace {
-
-using Clock = std::chrono::steady_clock;
-
-double elapsed_ms(Clock::time_point since) {
-  return std::chrono::duration<double, std::milli>(Clock::now() - since).count();
-}
 
 // A Sobel response of `threshold` is a grey step of about threshold / 4 (the 3x3 Sobel kernel
 // weighs a step 1 + 2 + 1): the smallest step the detector sees as an edge.
