@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <limits>
 #include <mutex>
+#include <optional>
 #include <stdexcept>
 #include <thread>
 
@@ -124,10 +125,11 @@ cv::Size first_frame_size(const std::string& frames) {
 class ShownFrames : public FrameSource {
  public:
   ShownFrames(const std::string& frames, const Perturbation& perturbation, const SequenceGap& gap,
-              int max_frames)
+              const OcclusionPlan* occlusion, int max_frames)
       : source_(open_frame_source(frames)),
         perturbation_(perturbation),
         gap_(gap),
+        occlusion_(occlusion),
         max_frames_(max_frames) {}
 
   // Reads the next frame shown (skipping stride - 1 frames after the first, and dropped frames),
@@ -144,6 +146,7 @@ class ShownFrames : public FrameSource {
       ++number_;
     } while (gap_.dropped(number_ - 1));
     gap_.apply(number_ - 1, &frame_);
+    if (occlusion_ != nullptr) occlusion_->draw(number_ - 1, &frame_);
     perturbation_.apply(frame_, number_, shown);
     return true;
   }
@@ -155,6 +158,7 @@ class ShownFrames : public FrameSource {
   std::unique_ptr<FrameSource> source_;
   const Perturbation& perturbation_;
   const SequenceGap& gap_;
+  const OcclusionPlan* occlusion_;  // drawn before the perturbation (kOcclude), else nullptr
   int max_frames_;
   cv::Mat frame_;
   int number_ = 0;  // 1-based in the sequence, of the last frame read
@@ -281,7 +285,15 @@ void run_tracker_job(const EvalJob& job, const EvalRunOptions& options, Progress
   const Perturbation& perturbation = options.perturbation;
   const double scale = perturbation.scale();
   outcome->gap = sequence_gap(options, static_cast<int>(seq.truth.size()));
-  ShownFrames source(seq.files.frames, perturbation, outcome->gap, options.max_frames);
+  std::optional<OcclusionPlan> occlusion;
+  if (perturbation.kind == PerturbationKind::kOcclude) {
+    // Each sequence gets its own positions from the seed.
+    std::uint64_t seed = perturbation.seed;
+    for (char c : seq.files.name) seed = seed * 1099511628211ULL + static_cast<unsigned char>(c);
+    occlusion.emplace(perturbation.occlusion, seq.truth, seed);
+  }
+  ShownFrames source(seq.files.frames, perturbation, outcome->gap,
+                     occlusion ? &*occlusion : nullptr, options.max_frames);
   std::unique_ptr<PolygonTracker> tracker = make_polygon_tracker(job.tracker, options.tracker);
   EvalTrackWriter writer(
       results_path((fs::path(options.out) / job.tracker).string(), seq.files.name),
@@ -298,6 +310,20 @@ void run_tracker_job(const EvalJob& job, const EvalRunOptions& options, Progress
   }
   runner.write_initial(initial);
   runner.run();
+  if (occlusion) {
+    // Where the occluders were, for scoring the frames during and after each (start and end
+    // frame, 1-based, end exclusive, and the most of the outline hidden).
+    AtomicFile events(results_path((fs::path(options.out) / job.tracker).string(),
+                                   seq.files.name + ".occlusion"));
+    events.stream() << "# start end hidden\n";
+    for (const OcclusionEvent& e : occlusion->events()) {
+      double hidden = 0.0;
+      for (int k = e.start; k < e.end(); ++k)
+        hidden = std::max(hidden, occlusion->hidden_fraction(k));
+      events.stream() << e.start + 1 << ' ' << e.end() + 1 << ' ' << hidden << '\n';
+    }
+    events.commit();
+  }
   outcome->timing = writer.timing;
   outcome->timing.has_timing = true;
   finish_timing(writer.fps_sum, writer.fps_frames, &outcome->timing);

@@ -65,8 +65,14 @@ void add_eval_command(CLI::App& app, int* exit_code) {
       "Evaluate once per perturbation of the frames, separated by ';' or spaces, each into "
       "OUT/<spec>/, plus OUT/perturb_summary.md/.csv and perturb_levels.png: none, stride:K, "
       "noise:SIGMA, blur:SIGMA, motion-blur:LENGTH[,DEGREES], brightness:B, contrast:C, gamma:G, "
-      "lowlight:B[,SIGMA], jpeg:QUALITY, downscale:FACTOR (docs/robustness-to-camera.md)");
-  command->add_option("--perturb-seed", *perturb_seed, "Seed of the perturbations' noise")
+      "lowlight:B[,SIGMA], jpeg:QUALITY, downscale:FACTOR (docs/robustness-to-camera.md), "
+      "occlude:COVER[,SECONDS[,bar|disc|hand[,sweep|stay[,solid|textured]]]] (occluders hiding "
+      "COVER of the outline at several seeded places of each sequence; where they were is "
+      "written to OUT/<spec>/<tracker>/<Seq>.occlusion.txt, bench/occlusion_report.py scores "
+      "them)");
+  command
+      ->add_option("--perturb-seed", *perturb_seed,
+                   "Seed of the perturbations' noise and of the occluders' places")
       ->capture_default_str();
   command->add_flag(
       "--gaps", *gaps,

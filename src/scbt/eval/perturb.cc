@@ -27,6 +27,7 @@ constexpr KindName kKindNames[] = {
     {PerturbationKind::kLowLight, "lowlight"},
     {PerturbationKind::kJpeg, "jpeg"},
     {PerturbationKind::kDownscale, "downscale"},
+    {PerturbationKind::kOcclude, "occlude"},
 };
 
 constexpr double kDefaultLowLightNoise = 3.0;
@@ -40,7 +41,8 @@ const char* kind_name(PerturbationKind kind) {
 
 const char kGrammar[] =
     "expected none, stride:K, noise:SIGMA, blur:SIGMA, motion-blur:LENGTH[,DEGREES], "
-    "brightness:B, contrast:C, gamma:G, lowlight:B[,SIGMA], jpeg:QUALITY or downscale:FACTOR";
+    "brightness:B, contrast:C, gamma:G, lowlight:B[,SIGMA], jpeg:QUALITY, downscale:FACTOR or "
+    "occlude:COVER[,SECONDS[,bar|disc|hand[,sweep|stay[,solid|textured]]]]";
 
 std::string format_number(double v) {
   std::ostringstream s;
@@ -104,6 +106,7 @@ cv::Mat motion_kernel(double length, double degrees) {
 std::string Perturbation::name() const {
   std::string n = kind_name(kind);
   if (kind == PerturbationKind::kNone) return n;
+  if (kind == PerturbationKind::kOcclude) return n + ":" + occlusion.name();
   n += ":" + format_number(level);
   if (kind == PerturbationKind::kMotionBlur && parameter != 0.0) {
     n += "," + format_number(parameter);
@@ -153,6 +156,9 @@ void Perturbation::check() const {
     case PerturbationKind::kDownscale:
       if (level < 1 || level > 16) fail("the downscale factor must be in 1..16");
       break;
+    case PerturbationKind::kOcclude:
+      occlusion.check();
+      break;
   }
 }
 
@@ -171,6 +177,7 @@ void Perturbation::apply(const cv::Mat& frame, int frame_index, cv::Mat* out) co
   switch (kind) {
     case PerturbationKind::kNone:
     case PerturbationKind::kFrameStride:
+    case PerturbationKind::kOcclude:
       frame.copyTo(*out);
       return;
     case PerturbationKind::kNoise:
@@ -249,6 +256,11 @@ Perturbation parse_perturbation(const std::string& spec, std::uint64_t seed) {
     throw std::invalid_argument("perturbation '" + spec + "' needs a level; " + kGrammar);
   }
   const std::string args = spec.substr(colon + 1);
+  if (p.kind == PerturbationKind::kOcclude) {
+    p.occlusion = parse_occlusion_spec(args);
+    p.level = p.occlusion.cover;
+    return p;
+  }
   const size_t comma = args.find(',');
   p.level = parse_number(args.substr(0, comma), spec);
   if (p.kind == PerturbationKind::kLowLight) p.parameter = kDefaultLowLightNoise;

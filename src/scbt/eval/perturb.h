@@ -16,6 +16,9 @@
 //   jpeg:Q             re-encoded as JPEG of quality Q (1..100)
 //   downscale:F        resolution divided by F (area averaging); the tracker sees the small frames
 //                      and its results are scaled back by F to be scored at full size
+//   occlude:COVER[,SECONDS[,SHAPE[,MOTION[,FILL]]]]
+//                      occluders passing over the object at seeded positions (eval/occlusion.h);
+//                      drawn by the evaluation, which knows where the object is
 #pragma once
 
 #include <cstdint>
@@ -23,6 +26,7 @@
 #include <string>
 #include <vector>
 
+#include "scbt/eval/occlusion.h"
 #include "scbt/geometry/polygon.h"
 
 namespace scbt {
@@ -39,6 +43,7 @@ enum class PerturbationKind {
   kLowLight,
   kJpeg,
   kDownscale,
+  kOcclude,
 };
 
 struct Perturbation {
@@ -47,7 +52,8 @@ struct Perturbation {
   double level = 0.0;
   // Second parameter: motion-blur angle (degrees) or low-light noise sigma.
   double parameter = 0.0;
-  std::uint64_t seed = 1;  // noise seed; the frame index is mixed in per frame
+  std::uint64_t seed = 1;   // noise seed; the frame index is mixed in per frame
+  OcclusionSpec occlusion;  // kOcclude: the occluders (placed per sequence by OcclusionPlan)
 
   // The spec string that parses back to this perturbation, e.g. "noise:15", "lowlight:0.3,3".
   std::string name() const;
@@ -61,7 +67,7 @@ struct Perturbation {
 
   // Writes the degraded version of `frame` (8-bit, 1, 3 or 4 channels) to `out`; frame_index
   // (1-based, in the original numbering) seeds the noise. For kDownscale `out` is smaller;
-  // kNone and kFrameStride copy. `out` must not alias `frame`.
+  // kNone, kFrameStride and kOcclude copy. `out` must not alias `frame`.
   void apply(const cv::Mat& frame, int frame_index, cv::Mat* out) const;
 };
 
