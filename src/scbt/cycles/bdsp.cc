@@ -70,7 +70,7 @@ int CycleSearch::shortest_paths(int tree, int source, int num_thirds, double lim
   int size = 1;
   // A unit not in the frontier goes in slot `size` (only kept if it improved). Arcs are sorted
   // by weight so that a bounded search stops at the first one past `limit`; the variants tried
-  // and measured slower are in docs/performance.md.
+  // and measured slower are in docs/dev/performance-notes.md.
   const auto relax = [&](double d, int k) {
     const double candidate = d + arcs[k].weight;
     const int w = arcs[k].unit;

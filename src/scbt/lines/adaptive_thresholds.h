@@ -15,7 +15,7 @@ namespace scbt {
 
 struct AdaptiveThresholdOptions {
   // On every frame. Off by default: lowering the thresholds where the published ones work lets
-  // clutter into the band (docs/robustness-to-camera.md).
+  // clutter into the band (docs/dev/camera-log-2026-12-02.md).
   bool enabled = false;
   // Only on a weak frame (when `enabled` is off): a frame whose search with the published
   // thresholds finds no boundary, or one below the tracking confidence, is searched again with
