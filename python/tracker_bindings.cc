@@ -216,12 +216,13 @@ class PyTracker {
 std::string format_stats(const TrackResult& s) {
   char text[320];
   std::snprintf(text, sizeof(text),
-                "FrameStats(state='%s', confidence=%.3f, held=%s, cost=%.6g, area_similarity=%.4f, "
+                "FrameStats(state='%s', confidence=%.3f, visible=%.3f, held=%s, cost=%.6g, "
+                "area_similarity=%.4f, "
                 "num_detected=%d, "
                 "num_kept=%d, num_vertices=%d, num_edges=%d, num_candidates=%d, line_ms=%.3f, "
                 "grouping_ms=%.3f)",
-                to_string(s.state).c_str(), s.confidence, s.held ? "True" : "False", s.cost,
-                s.area_similarity, s.num_detected, s.num_kept, s.num_vertices, s.num_edges,
+                to_string(s.state).c_str(), s.confidence, s.visible, s.held ? "True" : "False",
+                s.cost, s.area_similarity, s.num_detected, s.num_kept, s.num_vertices, s.num_edges,
                 s.num_candidates, s.line_ms, s.grouping_ms);
   return text;
 }
@@ -273,6 +274,12 @@ void register_tracker(py::module_& m) {
           "'tracking', 'uncertain' or 'lost' (docs/loss-handling.md).")
       .field("confidence", &TrackResult::confidence,
              "How far to trust the boundary, in [0, 1]; 0 when held or lost.")
+      .field("visible", &TrackResult::visible,
+             "Fraction of the remembered outline whose edge was seen where the boundary puts it "
+             "(1 before the memory holds an outline, 0 when held or lost).")
+      .field("from_memory", &TrackResult::from_memory,
+             "True when the boundary is the remembered outline fitted to the visible part of the "
+             "object (the cycle found departed from it, or none was found).")
       .field("evidence", &TrackResult::evidence,
              "The BoundaryEvidence the confidence was computed from.")
       .field("reacquired", &TrackResult::reacquired,

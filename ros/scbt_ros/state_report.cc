@@ -30,6 +30,8 @@ std::string state_json(const FrameReport& report) {
   if (const TrackResult* r = report.result) {
     out["state"] = to_string(r->state);
     out["confidence"] = r->confidence;
+    out["visible"] = r->visible;
+    out["from_memory"] = r->from_memory;
     out["held"] = r->held;
     out["recovered"] = r->recovered;
     out["reacquired"] = r->reacquired;

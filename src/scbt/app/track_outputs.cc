@@ -12,7 +12,7 @@ namespace scbt {
 namespace {
 
 void write_csv_header(std::ostream& csv) {
-  csv << "frame,held,state,confidence,cost,area_similarity,detected,kept,vertices,edges,"
+  csv << "frame,held,state,confidence,visible,cost,area_similarity,detected,kept,vertices,edges,"
          "candidates,line_ms,grouping_ms,total_ms,note\n";
 }
 
@@ -30,10 +30,10 @@ std::string csv_field(const std::string& text) {
 
 void write_csv_row(std::ostream& csv, int frame, const TrackResult& r, const std::string& note) {
   char line[256];
-  std::snprintf(line, sizeof(line), "%d,%d,%s,%.4f,%.6g,%.6g,%d,%d,%d,%d,%d,%.4f,%.4f,%.4f,", frame,
-                r.held ? 1 : 0, to_string(r.state).c_str(), r.confidence, r.cost, r.area_similarity,
-                r.num_detected, r.num_kept, r.num_vertices, r.num_edges, r.num_candidates,
-                r.line_ms, r.grouping_ms, r.total_ms());
+  std::snprintf(line, sizeof(line), "%d,%d,%s,%.4f,%.4f,%.6g,%.6g,%d,%d,%d,%d,%d,%.4f,%.4f,%.4f,",
+                frame, r.held ? 1 : 0, to_string(r.state).c_str(), r.confidence, r.visible, r.cost,
+                r.area_similarity, r.num_detected, r.num_kept, r.num_vertices, r.num_edges,
+                r.num_candidates, r.line_ms, r.grouping_ms, r.total_ms());
   csv << line << csv_field(note) << '\n';
 }
 

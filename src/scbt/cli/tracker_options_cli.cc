@@ -32,6 +32,12 @@ void add_tracker_options(CLI::App* command, TrackerOptions* options, std::string
                    "confident boundaries): a leak into the background costs something (0: off)")
       ->capture_default_str();
   command
+      ->add_option("--object-memory", options->object_memory,
+                   "Remember the object's outline and edges from confident frames; a cycle that "
+                   "departs from it along part of it (an occluder, a leak) is replaced by the "
+                   "remembered outline fitted to the visible part (true/false)")
+      ->capture_default_str();
+  command
       ->add_option("--recover-by-motion", options->recover_by_motion,
                    "When lost, search again where image motion moved the boundary (true/false)")
       ->capture_default_str();

@@ -32,7 +32,8 @@ Tracker::Tracker(const TrackerOptions& options,
     : options_(options),
       appearance_(options.appearance),
       monitor_(options.loss),
-      view_change_(options.loss.view_change) {
+      view_change_(options.loss.view_change),
+      memory_(options.memory) {
   options_.check();
   detector_ = make_line_detector(options_.detector);
   gradient_threshold_ = options_.detector.gradient_threshold;
@@ -110,6 +111,8 @@ void Tracker::init(const cv::Mat& frame, const Polygon& polygon) {
   appearance_pending_ = false;
   appearance_.remember(frame, boundary_);
   shape_memory_.restart(boundary_);
+  memory_.clear();
+  if (options_.object_memory) memory_.remember(boundary_, reference_gray_, {0, 0});
   monitor_.reset(
       polygon, unstretched_level(exposure_stretch_,
                                  sample_edges(polygon, reference_gray_, {0, 0}, 0.0).inside_level));
@@ -261,6 +264,20 @@ void Tracker::report_attempt(const Attempt& a, TrackResult* result) {
   }
 }
 
+bool Tracker::memory_overrides(Attempt* a, const MemoryFit& fit) {
+  // Too little of the object seen to place it from the memory alone.
+  if (fit.visible < options_.min_visible) return false;
+  if (!a->choice) return true;
+  if (!a->assessed) assess(a, boundary_);
+  // A cycle along the fitted outline (within a few pixels, or a twentieth of the object's size)
+  // but for a small part is the object: kept as found, to the pixel.
+  const double size = std::sqrt(std::max(1.0, area(fit.outline)));
+  const double near = std::max(3.0, 0.05 * size);
+  if (memory_.mismatch(a->boundary, fit.outline, near) <= 0.15) return false;
+  // Departing along edges like the object's own: its shape changed, which the memory follows.
+  return memory_.departure_support(a->boundary, fit.outline, near, gray_, gray_roi_.tl()) < 0.7;
+}
+
 TrackResult Tracker::track(const cv::Mat& frame) {
   if (!initialized()) throw std::logic_error("Tracker::track called before init");
   if (frame.empty()) to_gray(frame, &gray_);  // throws
@@ -270,6 +287,32 @@ TrackResult Tracker::track(const cv::Mat& frame) {
   if (monitor_.state() == TrackState::kLost) return track_lost(frame);
   TrackResult result;
   Attempt* a = search(frame, &result);
+
+  MemoryFit fit;
+  if (options_.object_memory && memory_.ready()) {
+    fit = memory_.fit(gray_, gray_roi_.tl());
+    result.visible = fit.valid ? fit.visible : 0.0;
+  }
+  if (fit.valid && memory_overrides(a, fit)) {
+    // The remembered outline where the visible part of the object puts it.
+    boundary_ = fit.outline;
+    boundary_area_ = area(boundary_);
+    result.from_memory = true;
+    result.confidence = fit.visible;
+    motion_.update(boundary_);
+    result.state = monitor_.update(boundary_, result.confidence, false, result.evidence);
+    if (result.state == TrackState::kTracking && fit.visible < options_.min_visible) {
+      result.state = TrackState::kUncertain;
+    }
+    if (result.state == TrackState::kLost) {
+      boundary_ = monitor_.latest_confident();
+      boundary_area_ = area(boundary_);
+      lost_output_ = boundary_;
+    }
+    result.boundary = boundary_;
+    report_attempt(*a, &result);
+    return result;
+  }
 
   if (a->choice) {
     // Before the grey window is handed to the motion reference, and against the previous boundary.
@@ -286,6 +329,10 @@ TrackResult Tracker::track(const cv::Mat& frame) {
         ++blur_frames_waited_ >= options_.blur.measure_every) {
       measure_edge_blur(gray_, a->roi.tl());
     }
+    if (options_.object_memory && result.confidence >= options_.loss.tracking_confidence &&
+        gray_roi_ == a->roi) {
+      memory_.remember(boundary_, gray_, a->roi.tl());
+    }
     // This frame's appearance replaces a pending one, which need not be read first.
     if (options_.predict_motion && options_.confirm_motion) appearance_pending_ = false;
     remember_reference(frame, *a);
@@ -293,6 +340,7 @@ TrackResult Tracker::track(const cv::Mat& frame) {
     remember_appearance(frame);
   } else {
     result.held = true;
+    result.visible = 0.0;
     check_view_cut(frame, result);
     motion_.update_held();
   }

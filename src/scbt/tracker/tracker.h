@@ -16,6 +16,7 @@
 #include "scbt/tracker/frame_checks.h"
 #include "scbt/tracker/motion_estimate.h"
 #include "scbt/tracker/motion_model.h"
+#include "scbt/tracker/object_memory.h"
 #include "scbt/tracker/reacquire.h"
 #include "scbt/tracker/reacquire_view_change.h"
 #include "scbt/tracker/scene_keyframes.h"
@@ -42,8 +43,14 @@ struct TrackResult {
   // frame (track_state.h). While lost, `boundary` is the last confident one and `held` is set.
   TrackState state = TrackState::kTracking;
   double confidence = 0.0;
-  BoundaryEvidence evidence;     // what the confidence was computed from (defaults when held)
-  bool reacquired = false;       // the lost object was found again in this frame
+  BoundaryEvidence evidence;  // what the confidence was computed from (defaults when held)
+  bool reacquired = false;    // the lost object was found again in this frame
+  // The fraction of the remembered outline whose edge was seen where the boundary puts it
+  // (object_memory.h); 1 before the memory holds an outline, 0 when held or lost.
+  double visible = 1.0;
+  // The boundary is the remembered outline fitted to the visible part of the object, not a cycle
+  // of this frame's edges (the cycle chosen departed from the object, or none was found).
+  bool from_memory = false;
   double cost = 0.0;             // grouping cost Γ of the chosen cycle (Eq. 1)
   double area_similarity = 0.0;  // Eq. 2 between the chosen cycle and the previous boundary
   int num_detected = 0;          // segments from the line detector
@@ -254,6 +261,10 @@ class Tracker {
   int match_kept_ = 0;
   StableChooser chooser_;     // its buffers and distance cache are reused frame to frame
   ShapeMemory shape_memory_;  // the shape the choice weighs candidates against
+  ObjectMemory memory_;       // the object's outline and edges (TrackerOptions::object_memory)
+  // Whether this frame's fit of the memory should replace attempt a's choice (none, or one that
+  // departs from the object along part of its outline).
+  bool memory_overrides(Attempt* a, const MemoryFit& fit);
   bool keep_debug_ = false;
   TrackDebug debug_;
 };

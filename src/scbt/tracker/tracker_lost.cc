@@ -68,6 +68,7 @@ TrackResult Tracker::track_lost(const cv::Mat& frame) {
   result = TrackResult();
   result.state = TrackState::kLost;
   result.held = true;
+  result.visible = 0.0;
   const Clock::time_point line_start = Clock::now();
   to_exposed_gray(frame, &search_gray_);
   const std::vector<Segment> segments =

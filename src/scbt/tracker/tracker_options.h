@@ -8,6 +8,7 @@
 #include "scbt/lines/line_detector.h"
 #include "scbt/tracker/confidence.h"
 #include "scbt/tracker/contrast_profile.h"
+#include "scbt/tracker/object_memory.h"
 #include "scbt/tracker/track_state.h"
 
 namespace scbt {
@@ -87,6 +88,15 @@ struct TrackerOptions {
   // and is searched for (docs/loss-handling.md).
   ConfidenceModel confidence;
   LossOptions loss;
+  // The object's outline remembered from confident frames (object_memory.h) and fitted to each
+  // frame: a chosen cycle that departs from the fitted outline along part of it (an occluder's
+  // side, a background sheet taken in) is replaced by the fitted outline, whose hidden part is
+  // predicted from the visible one; TrackResult::visible says how much of it was seen.
+  bool object_memory = false;
+  ObjectMemoryOptions memory;
+  // A boundary fitted from the memory with less than this fraction of its outline visible is
+  // reported `uncertain`.
+  double min_visible = 0.6;
 
   // Throws std::invalid_argument naming the first bad value.
   void check() const;

@@ -58,6 +58,7 @@ void Tracker::resume_tracking_from(const cv::Mat& frame, Polygon boundary, Track
     appearance_.remember(frame, boundary_);
   }
   shape_memory_.restart(boundary_);
+  if (options_.object_memory) memory_.remember(boundary_, reference_gray_, reference_roi_.tl());
   result->boundary = boundary_;
 }
 

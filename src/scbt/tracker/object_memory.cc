@@ -1,0 +1,260 @@
+#include "scbt/tracker/object_memory.h"
+
+#include <algorithm>
+#include <cmath>
+#include <opencv2/core.hpp>
+
+namespace scbt {
+namespace {
+
+// Outward unit normals of a closed outline.
+std::vector<Point> outward_normals(const Polygon& outline) {
+  const size_t n = outline.size();
+  const double orientation = signed_area(outline) >= 0.0 ? 1.0 : -1.0;
+  std::vector<Point> normals(n);
+  for (size_t i = 0; i < n; ++i) {
+    const Point t = outline[(i + 1) % n] - outline[(i + n - 1) % n];
+    const double len = std::max(1e-9, std::hypot(t.x, t.y));
+    normals[i] = Point(t.y, -t.x) * (orientation / len);
+  }
+  return normals;
+}
+
+// Bilinear grey level at frame point p of the window `gray` at `tl`; false outside it.
+bool grey_at(const cv::Mat& gray, cv::Point tl, Point p, double* value) {
+  const double x = p.x - tl.x, y = p.y - tl.y;
+  if (!(x >= 0.0 && y >= 0.0 && x < gray.cols - 1 && y < gray.rows - 1)) return false;
+  const int x0 = static_cast<int>(x), y0 = static_cast<int>(y);
+  const double fx = x - x0, fy = y - y0;
+  const uchar* r0 = gray.ptr<uchar>(y0) + x0;
+  const uchar* r1 = gray.ptr<uchar>(y0 + 1) + x0;
+  *value = (1 - fy) * ((1 - fx) * r0[0] + fx * r0[1]) + fy * ((1 - fx) * r1[0] + fx * r1[1]);
+  return true;
+}
+
+// The grey step across the outline at p + k n (outside minus inside, over 2 px); false outside
+// the window.
+bool step_at(const cv::Mat& gray, cv::Point tl, Point p, Point n, double k, double* step) {
+  double out = 0.0, in = 0.0;
+  if (!grey_at(gray, tl, p + n * (k + 1.0), &out) || !grey_at(gray, tl, p + n * (k - 1.0), &in)) {
+    return false;
+  }
+  *step = out - in;
+  return true;
+}
+
+}  // namespace
+
+Polygon resample_outline(const Polygon& polygon, int n) {
+  Polygon out;
+  const double total = perimeter(polygon);
+  if (polygon.size() < 2 || !(total > 0.0) || n <= 0) return out;
+  out.reserve(n);
+  size_t edge = 0;
+  double edge_start = 0.0;  // arc length at polygon[edge]
+  for (int k = 0; k < n; ++k) {
+    const double s = total * k / n;
+    for (;;) {
+      const Point a = polygon[edge], b = polygon[(edge + 1) % polygon.size()];
+      const double len = std::hypot(b.x - a.x, b.y - a.y);
+      if (s <= edge_start + len || edge + 1 == polygon.size()) {
+        const double t = len > 0.0 ? std::clamp((s - edge_start) / len, 0.0, 1.0) : 0.0;
+        out.push_back(a + (b - a) * t);
+        break;
+      }
+      edge_start += len;
+      ++edge;
+    }
+  }
+  return out;
+}
+
+void ObjectMemory::clear() {
+  model_.clear();
+  placed_.clear();
+  polarity_.clear();
+  contrast_.clear();
+}
+
+void ObjectMemory::remember(const Polygon& boundary, const cv::Mat& gray, cv::Point tl) {
+  model_ = resample_outline(boundary, options_.points);
+  if (model_.size() < 3) {
+    clear();
+    return;
+  }
+  const std::vector<Point> normals = outward_normals(model_);
+  polarity_.assign(model_.size(), 0.0);
+  contrast_.assign(model_.size(), 0.0);
+  for (size_t i = 0; i < model_.size(); ++i) {
+    // The strongest step within a pixel of the outline: a traced outline sits on its edge to a
+    // pixel or so.
+    double best = 0.0;
+    for (double k : {-1.0, 0.0, 1.0}) {
+      double step = 0.0;
+      if (step_at(gray, tl, model_[i], normals[i], k, &step) && std::abs(step) > std::abs(best)) {
+        best = step;
+      }
+    }
+    if (std::abs(best) >= options_.min_step) {
+      polarity_[i] = best > 0.0 ? 1.0 : -1.0;
+      contrast_[i] = std::abs(best);
+    }
+  }
+  placed_ = model_;
+}
+
+void ObjectMemory::place(const Polygon& boundary) {
+  if (!ready()) return;
+  placed_ = resample_outline(boundary, options_.points);
+  if (placed_.size() != model_.size()) placed_ = model_;
+}
+
+MemoryFit ObjectMemory::fit(const cv::Mat& gray, cv::Point tl) {
+  MemoryFit result;
+  if (!ready() || gray.empty()) return result;
+  const size_t n = placed_.size();
+  int with_edge = 0;
+  for (double p : polarity_) with_edge += p != 0.0 ? 1 : 0;
+  if (with_edge < static_cast<int>(n) / 4) return result;
+
+  Polygon current = placed_;
+  std::vector<Point> targets(n);
+  std::vector<double> found(n);  // offsets found along the normal; NaN: none
+  // Looks along each point's normal for the nearest strong step of its polarity, within `reach`.
+  const auto search = [&](double reach, const std::vector<Point>& normals) {
+    int matched = 0;
+    for (size_t i = 0; i < n; ++i) {
+      found[i] = std::nan("");
+      if (polarity_[i] == 0.0) continue;
+      const double need = std::max(options_.min_step, 0.4 * contrast_[i]);
+      double best_score = 0.0;
+      for (double k = -reach; k <= reach; k += 1.0) {
+        double step = 0.0;
+        if (!step_at(gray, tl, current[i], normals[i], k, &step)) continue;
+        const double response = polarity_[i] * step;
+        if (response < need) continue;
+        const double score = response * (1.0 - 0.5 * std::abs(k) / (reach + 1.0));
+        if (score > best_score) {
+          best_score = score;
+          found[i] = k;
+        }
+      }
+      if (!std::isnan(found[i])) {
+        targets[i] = current[i] + normals[i] * found[i];
+        ++matched;
+      }
+    }
+    return matched;
+  };
+
+  for (int round = 0; round < 3; ++round) {
+    const std::vector<Point> normals = outward_normals(current);
+    const int matched = search(round == 0 ? options_.search_px : 4.0, normals);
+    if (matched < with_edge / 4 || matched < 6) return result;
+    Point centre(0, 0);
+    for (const Point& p : current) centre += p;
+    centre *= 1.0 / n;
+    // A similarity x -> S (x - c) + c + t fitted point-to-line, reweighted against outliers
+    // (Huber) and held towards no change so that a visible side alone does not tilt it.
+    double a = 1.0, b = 0.0, tx = 0.0, ty = 0.0;
+    for (int irls = 0; irls < 4; ++irls) {
+      cv::Matx44d ata = cv::Matx44d::zeros();
+      cv::Vec4d atb(0, 0, 0, 0);
+      double weight_sum = 0.0;
+      for (size_t i = 0; i < n; ++i) {
+        if (std::isnan(found[i])) continue;
+        const Point c = current[i] - centre;
+        const Point& nn = normals[i];
+        const cv::Vec4d row(nn.x * c.x + nn.y * c.y, nn.y * c.x - nn.x * c.y, nn.x, nn.y);
+        const double rhs = nn.dot(targets[i] - centre);
+        const double predicted = row.dot(cv::Vec4d(a, b, tx, ty));
+        const double r = std::abs(predicted - rhs);
+        // Huber on the first pass, then Tukey's biweight: an occluder's edge of the object's
+        // polarity next to the hidden outline must not pull the fit at all.
+        double w = r <= options_.inlier_px ? 1.0 : options_.inlier_px / r;
+        if (irls > 0) {
+          const double u = r / (2.0 * options_.inlier_px);
+          w = u < 1.0 ? (1 - u * u) * (1 - u * u) : 0.0;
+        }
+        ata += w * row * row.t();
+        atb += w * rhs * row;
+        weight_sum += w;
+      }
+      // Held towards a = 1, b = 0 in units of the outline's size.
+      double radius = 0.0;
+      for (const Point& p : current) radius += std::hypot(p.x - centre.x, p.y - centre.y);
+      radius /= n;
+      const double hold = 0.05 * weight_sum * radius * radius;
+      ata(0, 0) += hold;
+      ata(1, 1) += hold;
+      atb[0] += hold;
+      cv::Mat solution;
+      if (!cv::solve(cv::Mat(ata), cv::Mat(atb), solution, cv::DECOMP_CHOLESKY)) return result;
+      a = solution.at<double>(0);
+      b = solution.at<double>(1);
+      tx = solution.at<double>(2);
+      ty = solution.at<double>(3);
+    }
+    for (Point& p : current) {
+      const Point c = p - centre;
+      p = centre + Point(a * c.x - b * c.y + tx, b * c.x + a * c.y + ty);
+    }
+  }
+  // Visible: points whose edge is where the fit put them.
+  const std::vector<Point> normals = outward_normals(current);
+  search(options_.inlier_px, normals);
+  int visible = 0;
+  for (size_t i = 0; i < n; ++i) visible += std::isnan(found[i]) ? 0 : 1;
+  result.valid = true;
+  result.outline = current;
+  result.visible = static_cast<double>(visible) / with_edge;
+  placed_ = current;
+  return result;
+}
+
+double ObjectMemory::departure_support(const Polygon& cycle, const Polygon& fitted, double distance,
+                                       const cv::Mat& gray, cv::Point tl) const {
+  if (!ready() || fitted.size() != model_.size()) return 1.0;
+  const Polygon samples = resample_outline(cycle, options_.points);
+  if (samples.size() < 3) return 1.0;
+  const std::vector<Point> normals = outward_normals(samples);
+  int departing = 0, supported = 0;
+  for (size_t i = 0; i < samples.size(); ++i) {
+    if (distance_to_boundary(samples[i], fitted) <= distance) continue;
+    ++departing;
+    size_t nearest = 0;
+    double best = 1e300;
+    for (size_t j = 0; j < fitted.size(); ++j) {
+      const Point d = fitted[j] - samples[i];
+      if (d.dot(d) < best) {
+        best = d.dot(d);
+        nearest = j;
+      }
+    }
+    const double need = std::max(options_.min_step, 0.4 * contrast_[nearest]);
+    for (double k : {-1.0, 0.0, 1.0}) {
+      double step = 0.0;
+      if (!step_at(gray, tl, samples[i], normals[i], k, &step)) continue;
+      const double response =
+          polarity_[nearest] != 0.0 ? polarity_[nearest] * step : std::abs(step);
+      if (response >= need) {
+        ++supported;
+        break;
+      }
+    }
+  }
+  return departing == 0 ? 1.0 : static_cast<double>(supported) / departing;
+}
+
+double ObjectMemory::mismatch(const Polygon& outline, const Polygon& other, double distance) const {
+  const auto far_fraction = [distance, this](const Polygon& from, const Polygon& to) {
+    const Polygon samples = resample_outline(from, options_.points);
+    if (samples.empty() || to.size() < 3) return 1.0;
+    int far = 0;
+    for (const Point& p : samples) far += distance_to_boundary(p, to) > distance ? 1 : 0;
+    return static_cast<double>(far) / samples.size();
+  };
+  return std::max(far_fraction(outline, other), far_fraction(other, outline));
+}
+
+}  // namespace scbt

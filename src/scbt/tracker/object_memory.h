@@ -1,0 +1,73 @@
+// What the tracker remembers of the object beyond the last boundary: its outline as a fixed
+// number of points, each with the polarity and contrast of the edge it had there, kept from
+// confident frames whose boundary agrees with it. Each frame the remembered outline is fitted to
+// the image (each point looks along its normal for an edge of its own polarity; a similarity
+// transform is fitted to the points that found one, robustly), which gives
+//  - where the object is even when part of it is hidden: the fitted outline, hidden part
+//    predicted from the visible one;
+//  - how much of it is visible: the fraction of points whose edge was found where the fit puts
+//    them;
+//  - whether a cycle the grouping chose is the object: a cycle that swaps part of the outline
+//    for edges the object never had (an occluder's side, a sheet behind it, a container's
+//    inside) lies away from the fitted outline along that part.
+#pragma once
+
+#include <opencv2/core/mat.hpp>
+#include <vector>
+
+#include "scbt/geometry/polygon.h"
+
+namespace scbt {
+
+struct ObjectMemoryOptions {
+  int points = 64;          // outline samples
+  double search_px = 12.0;  // how far along its normal each point looks for its edge
+  double min_step = 6.0;    // the smallest grey step counted as an edge (central difference)
+  // A point is visible when its edge lies within this of where the fit puts it (px).
+  double inlier_px = 2.5;
+};
+
+struct MemoryFit {
+  bool valid = false;    // a fit was made (the memory holds an outline and enough points matched)
+  Polygon outline;       // the remembered outline placed in this frame
+  double visible = 0.0;  // fraction of the outline whose edge was found where the fit puts it
+};
+
+class ObjectMemory {
+ public:
+  explicit ObjectMemory(const ObjectMemoryOptions& options = {}) : options_(options) {}
+
+  void clear();
+  bool ready() const { return !model_.empty(); }
+  // Remembers `boundary`, tracked confidently in the grey window `gray` (whose top-left corner is
+  // `tl` in the frame): its outline and, per point, the edge's polarity and contrast.
+  void remember(const Polygon& boundary, const cv::Mat& gray, cv::Point tl);
+  // Fits the remembered outline to the grey window, starting from where it was last placed.
+  MemoryFit fit(const cv::Mat& gray, cv::Point tl);
+  // Where the outline was last placed (the last fit, or the last remembered boundary).
+  const Polygon& placed() const { return placed_; }
+  // Moves the placement (the boundary was found elsewhere, e.g. re-acquired).
+  void place(const Polygon& boundary);
+
+  // Of `cycle`'s points farther than `distance` from `fitted` (the last fit's outline), the
+  // fraction with an edge across the cycle of the polarity and contrast the memory had nearest
+  // them (1 when none is that far): a cycle departing along the object's own edge follows a
+  // change of the object's shape; one departing along an occluder or the background does not.
+  double departure_support(const Polygon& cycle, const Polygon& fitted, double distance,
+                           const cv::Mat& gray, cv::Point tl) const;
+  // The fraction of `outline`'s points (as resampled by the memory) farther than `distance`
+  // from `other`, and the same the other way round: the larger of the two.
+  double mismatch(const Polygon& outline, const Polygon& other, double distance) const;
+
+ private:
+  ObjectMemoryOptions options_;
+  std::vector<double> polarity_;  // +1: brighter outside, -1: darker outside, 0: no clear edge
+  std::vector<double> contrast_;  // |step| at the point when remembered
+  Polygon model_;                 // the outline when remembered
+  Polygon placed_;                // the outline where it was last fitted
+};
+
+// `polygon` resampled to `n` points evenly spaced along its length, from its first vertex.
+Polygon resample_outline(const Polygon& polygon, int n);
+
+}  // namespace scbt
