@@ -63,6 +63,8 @@ class CMakeBuild(build_ext):
 
 setup(
     version=project_version(),
+    # setuptools' own staging (build/lib.*, build/bdist.*) beside the CMake trees, out of git's way.
+    options={"build": {"build_base": str(ROOT / "build" / "setuptools")}},
     ext_modules=[Extension("scbt", sources=[])],
     cmdclass={"build_ext": CMakeBuild},
     zip_safe=False,
