@@ -61,10 +61,16 @@ class CMakeBuild(build_ext):
         shutil.copyfile(ROOT / "python" / "scbt.pyi", target.parent / "scbt.pyi")
 
 
+STAGING = ROOT / "build" / "setuptools"
+STAGING.mkdir(parents=True, exist_ok=True)
+
 setup(
     version=project_version(),
-    # setuptools' own staging (build/lib.*, build/bdist.*) beside the CMake trees, out of git's way.
-    options={"build": {"build_base": str(ROOT / "build" / "setuptools")}},
+    # setuptools' own staging (lib.*, bdist.*, scbt.egg-info) beside the CMake trees, out of git's way.
+    options={
+        "build": {"build_base": str(STAGING)},
+        "egg_info": {"egg_base": str(STAGING)},
+    },
     ext_modules=[Extension("scbt", sources=[])],
     cmdclass={"build_ext": CMakeBuild},
     zip_safe=False,
