@@ -12,6 +12,7 @@ packages=(
   clang-format
   clang libclang-rt-14-dev
   pybind11-dev python3-dev python3-numpy python3-pytest python3-opencv
+  python3-venv python3-pip python3-setuptools python3-wheel
   xvfb xdotool x11-apps imagemagick
   ros-core-dev libroscpp-dev libsensor-msgs-dev libgeometry-msgs-dev libstd-msgs-dev
   libcv-bridge-dev libimage-transport-dev libmessage-filters-dev

@@ -4,7 +4,8 @@ boundary of every frame as one line `n x1 y1 ... xn yn` (scbt's polygon format).
 
     python3 track_folder.py FRAMES_DIR INIT_POLYGON_FILE
 
-Frames are the folder's .png images in name order; the first line of INIT_POLYGON_FILE is the
+Frames are the folder's .png and .jpg images in name order (the public dataset's sequences
+are folders of .jpg); the first line of INIT_POLYGON_FILE is the
 boundary in the first frame.
 """
 import pathlib
@@ -28,9 +29,10 @@ def format_polygon(polygon):
 def main(argv):
     if len(argv) != 3:
         sys.exit(f"usage: {argv[0]} FRAMES_DIR INIT_POLYGON_FILE  (scbt {scbt.__version__})")
-    paths = sorted(pathlib.Path(argv[1]).glob("*.png"))
+    paths = sorted(p for p in pathlib.Path(argv[1]).iterdir()
+                   if p.suffix.lower() in (".png", ".jpg", ".jpeg"))
     if not paths:
-        sys.exit(f"no .png frames in {argv[1]}")
+        sys.exit(f"no .png or .jpg frames in {argv[1]}")
     tracker = scbt.Tracker()  # default options: the paper's settings
     tracker.init(cv2.imread(str(paths[0])), read_first_polygon(argv[2]))
     print(format_polygon(tracker.boundary))

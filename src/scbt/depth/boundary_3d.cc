@@ -1,5 +1,6 @@
 #include "scbt/depth/boundary_3d.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
@@ -39,9 +40,23 @@ CircleFit fit_rim_circle(const std::vector<Eigen::Vector3d>& curve, const Eigen:
   return circle;
 }
 
+// The centre of the shortest interval holding half of `values` (the "shorth"; sorts them): for
+// noise alone the middle like a mean, but a one-sided tail (mixed pixels, all farther than the
+// rim) moves it far less than it moves a mean.
+double shortest_half_centre(std::vector<double>* values) {
+  std::sort(values->begin(), values->end());
+  const std::vector<double>& v = *values;
+  const std::size_t half = v.size() / 2;
+  std::size_t best = 0;
+  for (std::size_t i = 1; i + half < v.size(); ++i)
+    if (v[i + half] - v[i] < v[best + half] - v[best]) best = i;
+  return 0.5 * (v[best] + v[best + half]);
+}
+
 // The depth plane turned to the outline's circle normal nearest it, at the distance its inlier
-// points give, each weighted by 1 / sigma(z)^2 ~ z^-4; false (plane unchanged) when the outline
-// is not an ellipse or its normals are both farther than options.outline_normal_max_angle.
+// points give (the centre of their shortest half along the normal); false (plane unchanged) when
+// the outline is not an ellipse or its normals are both farther than
+// options.outline_normal_max_angle.
 bool turn_plane_to_outline(const std::vector<Eigen::Vector3d>& rays,
                            const std::vector<Eigen::Vector3d>& points, const DepthOptions& options,
                            PlaneFit* plane) {
@@ -55,16 +70,12 @@ bool turn_plane_to_outline(const std::vector<Eigen::Vector3d>& rays,
   const double cos_limit =
       std::cos(options.outline_normal_max_angle * 3.14159265358979323846 / 180.0);
   if (!(normal.dot(plane->normal) >= cos_limit)) return false;
-  double weighted = 0.0, weights = 0.0;
-  for (const Eigen::Vector3d& p : points) {
-    if (!p.allFinite()) continue;
-    const double w = 1.0 / (p.z() * p.z() * p.z() * p.z());
-    weighted += w * normal.dot(p);
-    weights += w;
-  }
-  if (!(weights > 0.0)) return false;
+  std::vector<double> distances;
+  for (const Eigen::Vector3d& p : points)
+    if (p.allFinite()) distances.push_back(normal.dot(p));
+  if (distances.size() < 2) return false;
   plane->normal = normal;
-  plane->offset = weighted / weights;
+  plane->offset = shortest_half_centre(&distances);
   double sum_sq = 0.0;
   for (const Eigen::Vector3d& p : points) {
     if (!p.allFinite()) continue;
@@ -73,6 +84,29 @@ bool turn_plane_to_outline(const std::vector<Eigen::Vector3d>& rays,
   }
   plane->rms = std::sqrt(sum_sq / plane->n_inliers);
   return true;
+}
+
+// The window row every sample's depth is read from: the one whose depth, where a sample has it
+// on its surface, is on average over the plane's inliers nearest the camera (samples without
+// it count as their first row). The first row straddles the object's edge (mixed pixels read
+// between the object and the background behind it), a row too far in can be past a thin lip on
+// a bowl's inner wall: both read farther than the rim, and noise averaged over the whole
+// boundary hardly moves the comparison. -1 when no row reads nearer than every sample's first.
+int nearest_reading_row(const std::vector<SurfaceDepth>& surfaces,
+                        const std::vector<Eigen::Vector3d>& first_points, const PlaneFit& plane,
+                        const PinholeIntrinsics& camera, const DepthOptions& options) {
+  int best = -1;
+  double best_gain = 0.0;
+  for (int row = 0; row < options.window_length; ++row) {
+    double gain = 0.0;  // towards the camera, summed over the inliers
+    for (std::size_t i = 0; i < surfaces.size(); ++i) {
+      const RowDepth& depth = surfaces[i].rows[row];
+      if (!plane.inlier[i] || !(depth.z > 0.0)) continue;
+      gain += plane.normal.dot(depth.z * pixel_ray(camera, depth.pixel) - first_points[i]);
+    }
+    if (gain > best_gain) best = row, best_gain = gain;
+  }
+  return best;
 }
 
 }  // namespace
@@ -89,24 +123,45 @@ Boundary3d lift_boundary_to_3d(const Polygon& boundary, const cv::Mat& depth,
   if (n == 0) return result;
 
   std::vector<SurfaceDepth> surfaces(n);
-  std::vector<double> z(n);
   std::vector<DepthPixel> scratch;
-  for (std::size_t i = 0; i < n; ++i) {
+  for (std::size_t i = 0; i < n; ++i)
     surfaces[i] = nearest_surface_depth(depth, samples[i], options, &scratch);
-    z[i] = surfaces[i].z;
-  }
-  reject_curve_outliers(options, &z);
 
   std::vector<Eigen::Vector3d> rays(n);
   result.samples.resize(n);
-  result.points.assign(n, kNan);
   for (std::size_t i = 0; i < n; ++i) {
     result.samples[i] = samples[i].pixel;
     rays[i] = pixel_ray(camera, samples[i].pixel);
-    if (z[i] > 0.0) result.points[i] = z[i] * pixel_ray(camera, surfaces[i].pixel);
   }
-
+  // Each sample's surface point, read from window row `row` (-1: its first row on the surface;
+  // a sample without that row keeps its first), after the curve's outliers are dropped.
+  std::vector<double> z(n);
+  auto lift_points = [&](int row) {
+    for (std::size_t i = 0; i < n; ++i)
+      z[i] = row >= 0 && surfaces[i].rows[row].z > 0.0 ? surfaces[i].rows[row].z : surfaces[i].z;
+    reject_curve_outliers(options, &z);
+    result.points.assign(n, kNan);
+    for (std::size_t i = 0; i < n; ++i) {
+      if (!(z[i] > 0.0)) continue;
+      const bool own = row >= 0 && surfaces[i].rows[row].z > 0.0;
+      result.points[i] =
+          z[i] * pixel_ray(camera, own ? surfaces[i].rows[row].pixel : surfaces[i].pixel);
+    }
+  };
+  lift_points(-1);
   PlaneFit plane = fit_plane_robust(result.points, options);
+  if (plane.found) {
+    const int row = nearest_reading_row(surfaces, result.points, plane, camera, options);
+    if (row >= 0) {
+      const std::vector<Eigen::Vector3d> first_points = result.points;
+      lift_points(row);
+      PlaneFit refit = fit_plane_robust(result.points, options);
+      if (refit.found)
+        plane = std::move(refit);
+      else
+        result.points = first_points;
+    }
+  }
   result.curve.assign(n, kNan);
   if (!plane.found) return result;
   for (std::size_t i = 0; i < n; ++i)

@@ -1,6 +1,7 @@
 #include "scbt/depth/depth_window.h"
 
 #include <algorithm>
+#include <array>
 #include <cstdint>
 
 namespace scbt {
@@ -65,13 +66,20 @@ SurfaceDepth nearest_surface_depth(const cv::Mat& depth, const BoundarySample& s
     const double centre = median_of_sorted(begin + i, upper(begin + i, end, z[i].z + tolerance));
     const DepthPixel* lo = lower(begin, end, centre - tolerance);
     const DepthPixel* hi = upper(begin, end, centre + tolerance);
-    int nearest_row = options.window_length;
-    for (const DepthPixel* p = lo; p != hi; ++p) nearest_row = std::min(nearest_row, p->row);
-    double sum_z = 0.0, sum_x = 0.0, sum_y = 0.0, count = 0.0;
-    for (const DepthPixel* p = lo; p != hi; ++p)
-      if (p->row == nearest_row) sum_z += p->z, sum_x += p->x, sum_y += p->y, count += 1.0;
-    surface.z = sum_z / count;
-    surface.pixel = Point(sum_x / count, sum_y / count);
+    std::array<double, kMaxWindowRows> count{};
+    for (const DepthPixel* p = lo; p != hi; ++p) {
+      RowDepth& row = surface.rows[p->row];
+      row.z += p->z, row.pixel.x += p->x, row.pixel.y += p->y, count[p->row] += 1.0;
+    }
+    surface.first_row = -1;
+    for (int k = 0; k < options.window_length; ++k) {
+      if (count[k] == 0.0) continue;
+      RowDepth& row = surface.rows[k];
+      row.z /= count[k], row.pixel.x /= count[k], row.pixel.y /= count[k];
+      if (surface.first_row < 0) surface.first_row = k;
+    }
+    surface.z = surface.rows[surface.first_row].z;
+    surface.pixel = surface.rows[surface.first_row].pixel;
     return surface;
   }
   return surface;

@@ -6,13 +6,16 @@
 // rim, is farther). So the window's valid depths are grouped into surfaces (depths within the
 // noise tolerance of each other) and the median of the nearest surface with enough pixels is
 // taken: an isolated too-near outlier, mixed pixels and the farther inside are all passed over.
-// Of the surface's pixels only those of the window row nearest the boundary are averaged (a
-// bowl's inner wall just past its lip can be within the tolerance of the lip's depth, but is
-// not on the rim), and their mean position is returned with the depth, so the 3-D point is
-// lifted where its depth was measured (on a tilted rim, lifting it on the boundary's own ray
-// would flatten the fitted plane).
+// The surface's pixels are averaged row by row (rows run along the boundary, one per distance
+// inwards), each row's mean depth with its mean position, so a 3-D point is lifted where its
+// depth was measured (on a tilted rim, lifting it on the boundary's own ray would flatten the
+// fitted plane). Which row the rim is read from is decided over the whole boundary
+// (boundary_3d.cc): the row nearest the boundary straddles the object's edge and its depth
+// mixes in the background's, a row too far in may be past a bowl's lip, on its inner wall;
+// both read farther than the rim.
 #pragma once
 
+#include <array>
 #include <opencv2/core/mat.hpp>
 #include <vector>
 
@@ -25,9 +28,19 @@ namespace scbt {
 // outlier_sigmas * noise_at_1m * z^2).
 double surface_tolerance(const DepthOptions& options, double z);
 
+// The mean depth and image position of one window row's pixels on the nearest surface.
+struct RowDepth {
+  double z = 0.0;  // metres; 0 when the row has none
+  Point pixel;
+};
+
+constexpr int kMaxWindowRows = 20;  // DepthOptions::window_length's limit
+
 struct SurfaceDepth {
-  double z = 0.0;  // metres; 0 when the window has no surface of min_surface_pixels pixels
-  Point pixel;     // mean image position of the surface's pixels that were averaged
+  double z = 0.0;     // metres; 0 when the window has no surface of min_surface_pixels pixels
+  Point pixel;        // the surface's row nearest the boundary: its mean depth and position
+  int first_row = 0;  // that row's index
+  std::array<RowDepth, kMaxWindowRows> rows{};  // every row's, 0 = the window's first
 };
 
 struct DepthPixel {

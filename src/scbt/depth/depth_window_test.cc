@@ -26,6 +26,24 @@ TEST(DepthWindow, ReadsTheObjectPastMixedEdgePixels) {
   EXPECT_NEAR(surface.pixel.y, 20.0, 1e-9);
 }
 
+TEST(DepthWindow, AveragesTheNearestSurfaceRowByRow) {
+  // Inwards from the boundary at x = 19.6: x = 21 reads slightly farther (a mixed pixel within
+  // the tolerance), x = 22.. the object itself.
+  cv::Mat depth = edge_image(800, 1400);
+  depth.col(20).setTo(cv::Scalar(1100));
+  depth.col(21).setTo(cv::Scalar(801));
+  std::vector<DepthPixel> scratch;
+  const SurfaceDepth surface = nearest_surface_depth(depth, kSample, DepthOptions{}, &scratch);
+  EXPECT_EQ(surface.first_row, 0);  // x = 21: window_offset 1 from 19.6, rounded
+  EXPECT_NEAR(surface.rows[0].z, 0.801, 1e-9);
+  EXPECT_NEAR(surface.rows[0].pixel.x, 21.0, 1e-9);
+  EXPECT_NEAR(surface.z, 0.801, 1e-9);
+  for (int row = 1; row < DepthOptions{}.window_length; ++row) {
+    EXPECT_NEAR(surface.rows[row].z, 0.800, 1e-9) << row;
+    EXPECT_NEAR(surface.rows[row].pixel.x, 21.0 + row, 1e-9) << row;
+  }
+}
+
 TEST(DepthWindow, IgnoresHolesAndAnIsolatedNearOutlier) {
   cv::Mat depth = edge_image(800, 1400);
   depth.at<std::uint16_t>(20, 21) = 0;

@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <opencv2/core.hpp>
 #include <opencv2/imgproc.hpp>
@@ -68,6 +69,46 @@ TEST(RgbdSensor, NoiseGrowsWithDepthSquaredAndTheOutlineLosesItsShare) {
       total += 2,
           missing += (depth.at<std::uint16_t>(y, x) == 0) + (depth.at<std::uint16_t>(x, y) == 0);
   EXPECT_NEAR(static_cast<double>(missing) / total, 0.2, 0.05);
+}
+
+TEST(RgbdSensor, EdgeArtefactsSmearTwoPixelsEachSideAndHolesTakeTheirShare) {
+  // A vertical step: 0.6 m left of column 100, 0.9 m from it on.
+  cv::Mat clean(200, 200, CV_32FC1, cv::Scalar(0.6));
+  clean.colRange(100, 200).setTo(0.9);
+  DepthSensorOptions options = edge_artefact_sensor(5);
+  options.noise_at_1m = 0.0;
+  options.hole_blobs = 0;
+  options.hole_share = 0.0;
+  options.depth_scale = 0.0001;  // finer than the smallest blend checked
+  cv::Mat depth;
+  apply_depth_sensor(clean, {}, options).convertTo(depth, CV_64F, options.depth_scale);
+  double max_blend[4] = {0, 0, 0, 0};  // columns 98..101 (rings 2, 1 | 1, 2)
+  for (int y = 1; y + 1 < depth.rows; ++y) {
+    for (int x = 98; x <= 101; ++x) {
+      const double own = clean.at<float>(y, x), other = x < 100 ? 0.9 : 0.6;
+      max_blend[x - 98] =
+          std::max(max_blend[x - 98], (depth.at<double>(y, x) - own) / (other - own));
+    }
+    EXPECT_NEAR(depth.at<double>(y, 97), 0.6, 1e-4);  // the third ring is clean
+    EXPECT_NEAR(depth.at<double>(y, 102), 0.9, 1e-4);
+  }
+  EXPECT_GT(max_blend[1], 0.4);  // the edge pixels: coverage-weighted, w up to 0.5
+  EXPECT_LE(max_blend[1], 0.5 + 1e-3);
+  EXPECT_GT(max_blend[2], 0.4);
+  EXPECT_LE(max_blend[2], 0.5 + 1e-3);
+  EXPECT_GT(max_blend[0], 0.2);  // the ring behind: up to 0.25
+  EXPECT_LE(max_blend[0], 0.25 + 1e-3);
+  EXPECT_GT(max_blend[3], 0.2);
+  EXPECT_LE(max_blend[3], 0.25 + 1e-3);
+
+  options = edge_artefact_sensor(5);
+  options.hole_blobs = 0;
+  options.outline_missing_share = 0.0;
+  const cv::Mat flat(240, 320, CV_32FC1, cv::Scalar(1.0));
+  const cv::Mat holes = apply_depth_sensor(flat, {}, options) == 0;
+  const double share = cv::countNonZero(holes) / static_cast<double>(holes.total());
+  EXPECT_GE(share, 0.10);
+  EXPECT_LT(share, 0.13);
 }
 
 }  // namespace
