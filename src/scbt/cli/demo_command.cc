@@ -7,7 +7,6 @@ namespace scbt::cli {
 
 void add_demo_command(CLI::App& app, int* exit_code) {
   auto options = std::make_shared<DemoOptions>();
-  auto detector = std::make_shared<std::string>("edlines");
   auto shape = std::make_shared<std::string>(to_string(options->scene.shape));
   auto no_video = std::make_shared<bool>(false);
   CLI::App* command = app.add_subcommand(
@@ -26,9 +25,9 @@ void add_demo_command(CLI::App& app, int* exit_code) {
       ->capture_default_str();
   command->add_flag("--no-video", *no_video, "Do not write the annotated demo.avi");
   command->add_flag("-q,--quiet", options->quiet, "No progress bar and no summary");
-  add_tracker_options(command, &options->tracker, detector.get());
-  command->callback([options, detector, shape, no_video, exit_code] {
-    options->tracker.detector.kind = parse_line_detector_kind(*detector);
+  auto tracker_flags = add_tracker_options(command);
+  command->callback([options, tracker_flags, shape, no_video, exit_code] {
+    tracker_flags->apply(&options->tracker);
     options->scene.shape = parse_scene_shape(*shape);
     options->video = !*no_video;
     const DemoSummary summary = run_demo(*options, std::cerr);

@@ -28,7 +28,6 @@ void list_dataset(const EvalRunOptions& options) {
 
 void add_eval_command(CLI::App& app, int* exit_code) {
   auto options = std::make_shared<EvalRunOptions>();
-  auto detector = std::make_shared<std::string>("edlines");
   auto list = std::make_shared<bool>(false);
   auto no_plot = std::make_shared<bool>(false);
   auto perturb = std::make_shared<std::string>();
@@ -77,9 +76,9 @@ void add_eval_command(CLI::App& app, int* exit_code) {
   command->add_flag("--no-plot", *no_plot, "Do not write success_curves.png");
   command->add_flag("-q,--quiet", options->quiet, "No progress output");
   command->add_flag("--list", *list, "List the trackers and the dataset's sequences, then exit");
-  add_tracker_options(command, &options->tracker, detector.get());
-  command->callback([options, detector, list, no_plot, perturb, perturb_seed, gaps, exit_code] {
-    options->tracker.detector.kind = parse_line_detector_kind(*detector);
+  auto tracker_flags = add_tracker_options(command);
+  command->callback([options, tracker_flags, list, no_plot, perturb, perturb_seed, gaps, exit_code] {
+    tracker_flags->apply(&options->tracker);
     if (*list) {
       list_dataset(*options);
       *exit_code = 0;
