@@ -14,6 +14,7 @@ packages=(
   pybind11-dev python3-dev python3-numpy python3-pytest python3-opencv
   xvfb xdotool x11-apps imagemagick
   ros-core-dev libroscpp-dev libsensor-msgs-dev libgeometry-msgs-dev libstd-msgs-dev
+  libdiagnostic-msgs-dev
   libcv-bridge-dev libimage-transport-dev libmessage-filters-dev
   python3-rosmaster python3-rospy python3-rostopic python3-rosbag python3-roslaunch rosout
   python3-sensor-msgs python3-geometry-msgs python3-std-msgs nlohmann-json3-dev

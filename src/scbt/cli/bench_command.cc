@@ -30,7 +30,10 @@ void add_bench_command(CLI::App& app, int* exit_code) {
   command->add_flag("-q,--quiet", options->quiet, "No progress bars");
   auto tracker_flags = add_tracker_options(command);
   command->callback([options, tracker_flags, full_frame, no_compare, exit_code] {
-    tracker_flags->apply(&options->tracker);
+    if (tracker_flags->apply(&options->tracker)) {
+      *exit_code = kExitOk;
+      return;
+    }
     options->tracker.detector.crop_to_boundary = !*full_frame;
     options->compare = !*no_compare;
     const BenchReport report = run_bench(*options, std::cerr);

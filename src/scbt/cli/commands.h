@@ -44,16 +44,18 @@ void add_bench_command(CLI::App& app, int* exit_code);
 // The tracker options shared by every command that tracks: --config FILE and one flag per option
 // of the option table (--detector, --filter-distance, ...). CLI11 fills them while parsing; apply()
 // then sets the config file's options, then the flags given, and checks the result (throws
-// std::invalid_argument with the table's message).
+// std::invalid_argument with the table's message); with --print-config it prints them (YAML) and
+// returns true: the command then stops.
 struct TrackerOptionFlags {
   struct Flag {
     std::string text;
     CLI::Option* option = nullptr;
   };
   std::string config;
+  bool print_config = false;
   std::map<std::string, Flag> flags;  // by option name
 
-  void apply(TrackerOptions* options) const;
+  bool apply(TrackerOptions* options) const;
 };
 std::shared_ptr<TrackerOptionFlags> add_tracker_options(CLI::App* command);
 

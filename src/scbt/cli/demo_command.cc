@@ -27,7 +27,10 @@ void add_demo_command(CLI::App& app, int* exit_code) {
   command->add_flag("-q,--quiet", options->quiet, "No progress bar and no summary");
   auto tracker_flags = add_tracker_options(command);
   command->callback([options, tracker_flags, shape, no_video, exit_code] {
-    tracker_flags->apply(&options->tracker);
+    if (tracker_flags->apply(&options->tracker)) {
+      *exit_code = kExitOk;
+      return;
+    }
     options->scene.shape = parse_scene_shape(*shape);
     options->video = !*no_video;
     const DemoSummary summary = run_demo(*options, std::cerr);

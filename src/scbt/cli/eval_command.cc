@@ -78,7 +78,10 @@ void add_eval_command(CLI::App& app, int* exit_code) {
   command->add_flag("--list", *list, "List the trackers and the dataset's sequences, then exit");
   auto tracker_flags = add_tracker_options(command);
   command->callback([options, tracker_flags, list, no_plot, perturb, perturb_seed, gaps, exit_code] {
-    tracker_flags->apply(&options->tracker);
+    if (tracker_flags->apply(&options->tracker)) {
+      *exit_code = kExitOk;
+      return;
+    }
     if (*list) {
       list_dataset(*options);
       *exit_code = 0;

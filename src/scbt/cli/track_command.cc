@@ -98,7 +98,10 @@ void add_track_command(CLI::App& app, int* exit_code) {
   auto tracker_flags = add_tracker_options(command);
   auto live = add_live_options(command);
   command->callback([options, tracker_flags, live, on_bad_frame, exit_code] {
-    tracker_flags->apply(&options->tracker);
+    if (tracker_flags->apply(&options->tracker)) {
+      *exit_code = kExitOk;
+      return;
+    }
     if (run_live_if_requested(*live, *options, exit_code)) return;
     options->on_bad_frame = parse_bad_frame_policy(*on_bad_frame);
     const TrackSummary summary = run_track(*options, std::cerr);

@@ -1,5 +1,6 @@
 // The tracker options of every command that tracks, made from the option table
 // (scbt/tracker/option_table.h): one flag per user option, plus --config FILE.
+#include <iostream>
 #include <map>
 
 #include "scbt/cli/commands.h"
@@ -7,7 +8,7 @@
 
 namespace scbt::cli {
 
-void TrackerOptionFlags::apply(TrackerOptions* options) const {
+bool TrackerOptionFlags::apply(TrackerOptions* options) const {
   if (!config.empty()) read_tracker_options_file(config, options);
   for (const OptionSpec& spec : tracker_option_table()) {
     const auto given = flags.find(spec.name);
@@ -15,6 +16,8 @@ void TrackerOptionFlags::apply(TrackerOptions* options) const {
     set_tracker_option(options, spec.name, given->second.text);
   }
   options->check();
+  if (print_config) std::cout << tracker_options_text(*options) << std::flush;
+  return print_config;
 }
 
 std::shared_ptr<TrackerOptionFlags> add_tracker_options(CLI::App* command) {
@@ -24,6 +27,10 @@ std::shared_ptr<TrackerOptionFlags> add_tracker_options(CLI::App* command) {
       ->add_option("--config", flags->config,
                    "Tracker options from a YAML or JSON file: option names as in Python and ROS "
                    "(shape_weight: 2.0); flags given as well override it")
+      ->group("Tracker options");
+  command
+      ->add_flag("--print-config", flags->print_config,
+                 "Print the tracker options (defaults, --config, flags) as a config file and exit")
       ->group("Tracker options");
   for (const OptionSpec& spec : tracker_option_table()) {
     TrackerOptionFlags::Flag& flag = flags->flags[spec.name];

@@ -7,8 +7,9 @@
 #include <cstdlib>
 #include <fstream>
 #include <limits>
-#include <opencv2/core/persistence.hpp>
+#include <opencv2/core.hpp>
 #include <sstream>
+#include <type_traits>
 
 namespace scbt {
 namespace {
@@ -171,9 +172,15 @@ std::string number_text(double value) {
 
 std::string quoted(const std::string& text) { return "'" + text + "'"; }
 
-// The value as the message's "got ...".
+bool parse_number(const std::string& text, double* out);
+
+// The value as the message's "got ...": text quoted unless it reads as a number, so that a
+// command line's "2" and a config file's 2 are reported alike.
 std::string got_text(const OptionValue& value) {
-  if (const auto* text = std::get_if<std::string>(&value)) return quoted(*text);
+  if (const auto* text = std::get_if<std::string>(&value)) {
+    double number = 0.0;
+    return parse_number(*text, &number) ? format_option_value(number) : quoted(*text);
+  }
   return format_option_value(value);
 }
 
@@ -215,7 +222,7 @@ std::string range_phrase(const OptionSpec& spec) {
 
 OptionValue check_number(const OptionSpec& spec, const OptionValue& value) {
   const bool whole = spec.type == OptionType::kInt;
-  const char* kind = whole ? "a whole number" : "a number";
+  const std::string kind = spec.expected();
   double x = 0.0;
   if (const auto* i = std::get_if<long long>(&value)) {
     x = static_cast<double>(*i);
@@ -245,7 +252,7 @@ OptionValue check_bool(const OptionSpec& spec, const OptionValue& value) {
 }
 
 OptionValue check_choice(const OptionSpec& spec, const OptionValue& value) {
-  const std::string what = "one of " + spec.range_text();
+  const std::string what = spec.expected();
   const auto* text = std::get_if<std::string>(&value);
   if (!text) fail(spec, what, value, true);
   for (const std::string& choice : spec.choices) {
@@ -293,6 +300,20 @@ std::string OptionSpec::type_name() const {
       return "choice";
   }
   return "?";
+}
+
+std::string OptionSpec::expected() const {
+  switch (type) {
+    case OptionType::kBool:
+      return "true or false";
+    case OptionType::kInt:
+      return "a whole number";
+    case OptionType::kDouble:
+      return "a number";
+    case OptionType::kChoice:
+      return "one of " + range_text();
+  }
+  return "";
 }
 
 std::string OptionSpec::range_text() const {
@@ -411,24 +432,20 @@ void read_tracker_options_file(const std::string& path, TrackerOptions* options)
   *options = read;
 }
 
-void write_tracker_options_file(const std::string& path, const TrackerOptions& options) {
-  const bool json = path.size() >= 5 && lower(path.substr(path.size() - 5)) == ".json";
-  std::ofstream out(path, std::ios::binary | std::ios::trunc);
-  if (!out) throw std::invalid_argument(path + ": cannot open for writing");
-  if (json) out << "{\n";
+std::string tracker_options_text(const TrackerOptions& options, bool json) {
+  std::string text = json ? "{\n" : "";
   const auto& table = tracker_option_table();
   for (size_t i = 0; i < table.size(); ++i) {
     const OptionSpec& spec = table[i];
     std::string value = format_option_value(spec.get(options));
-    if (json && spec.type == OptionType::kChoice) value = "\"" + value + "\"";
     if (json) {
-      out << "  \"" << spec.name << "\": " << value << (i + 1 < table.size() ? ",\n" : "\n");
+      if (spec.type == OptionType::kChoice) value = "\"" + value + "\"";
+      text += "  \"" + spec.name + "\": " + value + (i + 1 < table.size() ? ",\n" : "\n");
     } else {
-      out << spec.name << ": " << value << "\n";
+      text += spec.name + ": " + value + "\n";
     }
   }
-  if (json) out << "}\n";
-  if (!out.flush()) throw std::invalid_argument(path + ": cannot write");
+  return json ? text + "}\n" : text;
 }
 
 }  // namespace scbt

@@ -49,6 +49,9 @@ struct OptionSpec {
   std::string flag() const;        // "--shape-weight"
   std::string type_name() const;   // "bool", "int", "float", "choice"
   std::string range_text() const;  // "[0, 100]", "1..1000", "true or false", "edlines, lsd, ..."
+  // What a value of the wrong kind is told: "true or false", "a whole number", "a number",
+  // "one of edlines, ...".
+  std::string expected() const;
 };
 
 // The user options in the order they are listed (grouped).
@@ -76,7 +79,7 @@ std::string tracker_options_repr(const TrackerOptions& options);
 // options it names are set on `options`, the others kept. Throws std::invalid_argument
 // "FILE: MESSAGE" for an unreadable file, an unknown name or a bad value.
 void read_tracker_options_file(const std::string& path, TrackerOptions* options);
-// Writes every user option of `options` as such a file (YAML, or JSON for a .json name).
-void write_tracker_options_file(const std::string& path, const TrackerOptions& options);
+// Every user option of `options` as such a file: YAML ("name: value" lines), or JSON.
+std::string tracker_options_text(const TrackerOptions& options, bool json = false);
 
 }  // namespace scbt
