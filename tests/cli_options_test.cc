@@ -213,6 +213,16 @@ TEST_F(CliOptionsTest, ConfigFileErrorsNameTheFile) {
   EXPECT_EQ(r.err, "scbt: error: missing.yaml: cannot open for reading\n");
 }
 
+// -o is track's results file: the commands that write a folder take --out only, and say so.
+TEST_F(CliOptionsTest, FolderCommandsRefuseDashO) {
+  for (const std::string command : {"eval", "demo"}) {
+    const Run r = run(dir_, command + " -o out --print-config");
+    EXPECT_EQ(r.exit_code, 2) << command;
+    EXPECT_EQ(r.err, "scbt: error: " + command +
+                         " writes a folder: give it as --out DIR (-o is track's results file)\n");
+  }
+}
+
 // Options that only act through another are switched with it; on their own they are refused.
 TEST(TrackerOptionsCheck, RefusesSwitchesThatWouldDoNothing) {
   TrackerOptions options;

@@ -5,8 +5,11 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <fstream>
 #include <map>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -125,6 +128,22 @@ TEST(NodeOptions, EveryBadValueIsRefusedWithTheTablesMessage) {
   list[0] = 1;
   EXPECT_EQ(refusal({{"shape_weight", list}}),
             "parameter /scbt/shape_weight: shape_weight must be a number, got a list");
+}
+
+// The launch file passes every option on (its argument named as the parameter).
+TEST(NodeOptions, LaunchFileHasAnArgumentPerOption) {
+  std::ifstream file(SCBT_LAUNCH_FILE);
+  std::stringstream text;
+  text << file.rdbuf();
+  ASSERT_FALSE(text.str().empty()) << SCBT_LAUNCH_FILE;
+  for (const OptionSpec& spec : tracker_option_table()) {
+    EXPECT_NE(text.str().find("<arg name=\"" + spec.name + "\" default=\"\"/>"), std::string::npos)
+        << spec.name;
+    EXPECT_NE(text.str().find("<param name=\"" + spec.name + "\" value=\"$(arg " + spec.name +
+                              ")\""),
+              std::string::npos)
+        << spec.name;
+  }
 }
 
 }  // namespace

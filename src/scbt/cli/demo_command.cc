@@ -13,7 +13,7 @@ void add_demo_command(CLI::App& app, int* exit_code) {
       "demo",
       "Render a synthetic clip (a textureless outline moving, rotating and scaling over clutter "
       "and noise), track it from its known first outline and report the error against the truth");
-  command->add_option("-o,--out", options->out_dir, "Output folder")->capture_default_str();
+  command->add_option("--out", options->out_dir, "Output folder")->capture_default_str();
   command->add_option("--frames", options->frames, "Clip length in frames")->capture_default_str();
   command->add_option("--seed", options->scene.seed, "Seed of the clutter, noise and shape")
       ->capture_default_str();
@@ -25,8 +25,14 @@ void add_demo_command(CLI::App& app, int* exit_code) {
       ->capture_default_str();
   command->add_flag("--no-video", *no_video, "Do not write the annotated demo.avi");
   command->add_flag("-q,--quiet", options->quiet, "No progress bar and no summary");
+  // -o is `track`'s results file; this command writes a folder.
+  auto short_out = std::make_shared<std::string>();
+  command->add_option("-o", *short_out)->group("");
   auto tracker_flags = add_tracker_options(command);
-  command->callback([options, tracker_flags, shape, no_video, exit_code] {
+  command->callback([options, tracker_flags, short_out, shape, no_video, exit_code] {
+    if (!short_out->empty()) {
+      throw std::invalid_argument("demo writes a folder: give it as --out DIR (-o is track's results file)");
+    }
     if (tracker_flags->apply(&options->tracker)) {
       *exit_code = kExitOk;
       return;

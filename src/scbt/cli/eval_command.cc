@@ -51,7 +51,7 @@ void add_eval_command(CLI::App& app, int* exit_code) {
   command->add_option("--results", options->results,
                       "Score existing results: NAME=DIR with DIR/<Seq>.txt (one polygon line per "
                       "frame); repeatable. Nothing is run unless --trackers is also given");
-  command->add_option("-o,--out", options->out,
+  command->add_option("--out", options->out,
                       "Output folder: <tracker>/<Seq>.txt, report.md (with the confidence's ROC "
                       "AUC per sequence), summary.csv, frames.csv, curves.csv, loss.csv, "
                       "success_curves.png");
@@ -76,8 +76,14 @@ void add_eval_command(CLI::App& app, int* exit_code) {
   command->add_flag("--no-plot", *no_plot, "Do not write success_curves.png");
   command->add_flag("-q,--quiet", options->quiet, "No progress output");
   command->add_flag("--list", *list, "List the trackers and the dataset's sequences, then exit");
+  // -o is `track`'s results file; this command writes a folder.
+  auto short_out = std::make_shared<std::string>();
+  command->add_option("-o", *short_out)->group("");
   auto tracker_flags = add_tracker_options(command);
-  command->callback([options, tracker_flags, list, no_plot, perturb, perturb_seed, gaps, exit_code] {
+  command->callback([options, tracker_flags, short_out, list, no_plot, perturb, perturb_seed, gaps, exit_code] {
+    if (!short_out->empty()) {
+      throw std::invalid_argument("eval writes a folder: give it as --out DIR (-o is track's results file)");
+    }
     if (tracker_flags->apply(&options->tracker)) {
       *exit_code = kExitOk;
       return;
