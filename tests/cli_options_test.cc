@@ -20,17 +20,17 @@ namespace fs = std::filesystem;
 using cli_test::fresh_test_dir;
 using cli_test::read_file;
 
-struct Run {
+struct Outcome {
   int exit_code = -1;
   std::string out;
   std::string err;
 };
 
-Run run(const fs::path& dir, const std::string& args) {
+Outcome run(const fs::path& dir, const std::string& args) {
   const std::string command = "cd '" + dir.string() + "' && '" + std::string(SCBT_BINARY) +
                               "' " + args + " > out.txt 2> err.txt";
   const int status = std::system(command.c_str());
-  Run r;
+  Outcome r;
   r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : 1000 + WTERMSIG(status);
   r.out = read_file(dir / "out.txt");
   r.err = read_file(dir / "err.txt");
@@ -127,7 +127,7 @@ TEST_F(CliOptionsTest, TableIsSmallAndWellFormed) {
 
 // --print-config shows the defaults, so that a config file can start from them.
 TEST_F(CliOptionsTest, PrintConfigShowsEveryDefault) {
-  const Run r = run(dir_, "track --print-config");
+  const Outcome r = run(dir_, "track --print-config");
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_EQ(r.out, tracker_options_text(TrackerOptions()));
   for (const OptionSpec& spec : tracker_option_table()) {
@@ -142,17 +142,17 @@ TEST_F(CliOptionsTest, EveryOptionIsAFlagAndAConfigKey) {
     set_tracker_option(&expected, spec.name, value);
     const std::string want = tracker_options_text(expected);
 
-    const Run flag = run(dir_, "track " + spec.flag() + " " + value + " --print-config");
+    const Outcome flag = run(dir_, "track " + spec.flag() + " " + value + " --print-config");
     EXPECT_EQ(flag.exit_code, 0) << spec.name << ": " << flag.err;
     EXPECT_EQ(flag.out, want) << spec.flag() << " " << value;
 
     write(dir_ / "options.yaml", spec.name + ": " + value + "\n");
-    const Run yaml = run(dir_, "eval --config options.yaml --print-config");
+    const Outcome yaml = run(dir_, "eval --config options.yaml --print-config");
     EXPECT_EQ(yaml.exit_code, 0) << spec.name << ": " << yaml.err;
     EXPECT_EQ(yaml.out, want) << "YAML " << spec.name << ": " << value;
 
     write(dir_ / "options.json", "{\"" + spec.name + "\": " + json_value(value) + "}");
-    const Run json = run(dir_, "demo --config options.json --print-config");
+    const Outcome json = run(dir_, "demo --config options.json --print-config");
     EXPECT_EQ(json.exit_code, 0) << spec.name << ": " << json.err;
     EXPECT_EQ(json.out, want) << "JSON " << spec.name << ": " << value;
   }
@@ -165,17 +165,17 @@ TEST_F(CliOptionsTest, EveryBadValueIsRefusedWithTheSameMessage) {
       ASSERT_NE(message, "") << spec.name << " accepted " << bad;
       EXPECT_EQ(message.rfind(spec.name + " must be ", 0), 0u) << message;
 
-      const Run flag = run(dir_, "track " + spec.flag() + " " + bad + " --print-config");
+      const Outcome flag = run(dir_, "track " + spec.flag() + " " + bad + " --print-config");
       EXPECT_EQ(flag.exit_code, 2) << spec.flag() << " " << bad;
       EXPECT_EQ(flag.err, "scbt: error: " + message + "\n") << spec.flag() << " " << bad;
 
       write(dir_ / "bad.yaml", spec.name + ": " + bad + "\n");
-      const Run yaml = run(dir_, "track --config bad.yaml --print-config");
+      const Outcome yaml = run(dir_, "track --config bad.yaml --print-config");
       EXPECT_EQ(yaml.exit_code, 2) << "YAML " << spec.name << ": " << bad;
       EXPECT_EQ(yaml.err, "scbt: error: bad.yaml: " + message + "\n") << "YAML " << bad;
 
       write(dir_ / "bad.json", "{\"" + spec.name + "\": " + json_value(bad) + "}");
-      const Run json = run(dir_, "track --config bad.json --print-config");
+      const Outcome json = run(dir_, "track --config bad.json --print-config");
       EXPECT_EQ(json.exit_code, 2) << "JSON " << spec.name << ": " << bad;
       EXPECT_EQ(json.err, "scbt: error: bad.json: " + message + "\n") << "JSON " << bad;
     }
@@ -185,7 +185,7 @@ TEST_F(CliOptionsTest, EveryBadValueIsRefusedWithTheSameMessage) {
 // The flags override the config file, whatever their order on the command line.
 TEST_F(CliOptionsTest, FlagsOverrideTheConfigFile) {
   write(dir_ / "options.yaml", "shape_weight: 2\nseed_stride: 3\npredict_motion: false\n");
-  const Run r = run(dir_, "track --shape-weight 1.5 --config options.yaml --print-config");
+  const Outcome r = run(dir_, "track --shape-weight 1.5 --config options.yaml --print-config");
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_NE(r.out.find("shape_weight: 1.5\n"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("seed_stride: 3\n"), std::string::npos) << r.out;
@@ -194,7 +194,7 @@ TEST_F(CliOptionsTest, FlagsOverrideTheConfigFile) {
 
 TEST_F(CliOptionsTest, ConfigFileErrorsNameTheFile) {
   write(dir_ / "typo.yaml", "shape_wieght: 2\n");
-  Run r = run(dir_, "track --config typo.yaml --print-config");
+  Outcome r = run(dir_, "track --config typo.yaml --print-config");
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_EQ(r.err, "scbt: error: typo.yaml: unknown option 'shape_wieght'\n");
 
@@ -216,7 +216,7 @@ TEST_F(CliOptionsTest, ConfigFileErrorsNameTheFile) {
 // -o is track's results file: the commands that write a folder take --out only, and say so.
 TEST_F(CliOptionsTest, FolderCommandsRefuseDashO) {
   for (const std::string command : {"eval", "demo"}) {
-    const Run r = run(dir_, command + " -o out --print-config");
+    const Outcome r = run(dir_, command + " -o out --print-config");
     EXPECT_EQ(r.exit_code, 2) << command;
     EXPECT_EQ(r.err, "scbt: error: " + command +
                          " writes a folder: give it as --out DIR (-o is track's results file)\n");

@@ -35,7 +35,9 @@ std::shared_ptr<TrackerOptionFlags> add_tracker_options(CLI::App* command) {
   for (const OptionSpec& spec : tracker_option_table()) {
     TrackerOptionFlags::Flag& flag = flags->flags[spec.name];
     std::string help = spec.help;
-    if (spec.type != OptionType::kBool) help += " (" + spec.range_text() + ")";
+    if (spec.type == OptionType::kInt || spec.type == OptionType::kDouble) {
+      help += "; range " + spec.range_text();
+    }
     flag.option = command->add_option(spec.flag(), flag.text, help)
                       ->default_str(format_option_value(spec.get(defaults)))
                       ->type_name(spec.type == OptionType::kBool ? "true|false"
