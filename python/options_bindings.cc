@@ -38,11 +38,11 @@ OptionValue from_python(const OptionSpec& spec, const py::handle& value) {
     try {
       return value.cast<long long>();
     } catch (const py::cast_error&) {
-      return py::float_(value).cast<double>();  // beyond 64 bits: out of every range
+      return py::float_(py::reinterpret_borrow<py::object>(value)).cast<double>();  // beyond 64 bits: out of every range
     }
   }
   if (py::isinstance<py::float_>(value) || py::hasattr(value, "__float__")) {
-    return py::float_(value).cast<double>();
+    return py::float_(py::reinterpret_borrow<py::object>(value)).cast<double>();
   }
   throw wrong();
 }
@@ -68,8 +68,10 @@ std::string options_doc() {
       doc += "\n" + group + ":\n";
     }
     doc += "  " + spec.name + " (" + spec.type_name() + ", " +
-           format_option_value(spec.get(defaults));
-    if (spec.type != OptionType::kBool) doc += "; " + spec.range_text();
+           py::repr(to_python(spec.get(defaults))).cast<std::string>();
+    if (spec.type == OptionType::kInt || spec.type == OptionType::kDouble) {
+      doc += "; " + spec.range_text();
+    }
     doc += "): " + spec.help + "\n";
   }
   return doc;
@@ -155,7 +157,9 @@ void register_options(py::module_& m) {
             return to_python(spec->get(o));
           },
           py::arg("name"), "The option's value by name, as options['shape_weight'].")
-      .def("keys", &option_names, "The option names, in the table's order.")
+      .def(
+          "keys", [](const TrackerOptions&) { return option_names(); },
+          "The option names, in the table's order.")
       .def("__repr__", &tracker_options_repr)
       .def("__eq__",
            [](const TrackerOptions& a, const TrackerOptions& b) {
@@ -168,7 +172,7 @@ void register_options(py::module_& m) {
   for (const OptionSpec& spec : tracker_option_table()) {
     const std::string name = spec.name;
     std::string doc = spec.help + " (" + spec.type_name() + ", default " +
-                      format_option_value(spec.get(defaults));
+                      py::repr(to_python(spec.get(defaults))).cast<std::string>();
     if (spec.type != OptionType::kBool) doc += "; " + spec.range_text();
     doc += ")";
     options.def_property(
