@@ -50,8 +50,8 @@ void register_geometry(py::module_& m) {
       [](const std::string& path, const py::iterable& polygons) {
         std::string text;
         for (const py::handle& item : polygons) {
-          text += format_polygon_line(array_to_polygon(py::reinterpret_borrow<py::object>(item),
-                                                       "polygon")) +
+          text += format_polygon_line(
+                      array_to_polygon(py::reinterpret_borrow<py::object>(item), "polygon")) +
                   "\n";
         }
         std::ofstream out(path, std::ios::binary | std::ios::trunc);

@@ -38,7 +38,8 @@ OptionValue from_python(const OptionSpec& spec, const py::handle& value) {
     try {
       return value.cast<long long>();
     } catch (const py::cast_error&) {
-      return py::float_(py::reinterpret_borrow<py::object>(value)).cast<double>();  // beyond 64 bits: out of every range
+      return py::float_(py::reinterpret_borrow<py::object>(value))
+          .cast<double>();  // beyond 64 bits: out of every range
     }
   }
   if (py::isinstance<py::float_>(value) || py::hasattr(value, "__float__")) {
@@ -121,7 +122,8 @@ TrackerOptions options_from_python(const py::object& base, const py::kwargs& kwa
 
 py::dict options_as_dict(const TrackerOptions& options) {
   py::dict d;
-  for (const OptionSpec& spec : tracker_option_table()) d[spec.name.c_str()] = to_python(spec.get(options));
+  for (const OptionSpec& spec : tracker_option_table())
+    d[spec.name.c_str()] = to_python(spec.get(options));
   return d;
 }
 

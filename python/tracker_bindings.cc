@@ -7,9 +7,9 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <memory>
 #include <mutex>
 #include <opencv2/core/mat.hpp>
-#include <memory>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -56,7 +56,8 @@ class PyTracker {
   // A box (x, y, w, h) is four numbers in a row; a polygon is (N, 2).
   py::array_t<double> init(const py::object& frame_object, const py::object& shape) {
     const py::array values = py::array::ensure(shape);
-    if (values && values.ndim() == 1 && values.size() == 4) return init_from_box(frame_object, shape);
+    if (values && values.ndim() == 1 && values.size() == 4)
+      return init_from_box(frame_object, shape);
     py::array keep;
     const cv::Mat frame = frame_to_mat(frame_object, "frame", &keep);
     const Polygon polygon = array_to_polygon(shape, "polygon");
@@ -243,8 +244,8 @@ void register_tracker(py::module_& m) {
       "    tracker.init(frame, (x, y, w, h))        # or an (N, 2) polygon\n"
       "    ok, boundary = tracker.update(next_frame)")
       .def(py::init([](const py::object& options, bool keep_debug, const py::kwargs& kwargs) {
-             return std::make_unique<PyTracker>(
-                 options_from_python(options, kwargs, "Tracker", {}), keep_debug);
+             return std::make_unique<PyTracker>(options_from_python(options, kwargs, "Tracker", {}),
+                                                keep_debug);
            }),
            py::arg("options") = py::none(), py::kw_only(), py::arg("keep_debug") = false)
       .def("init", &PyTracker::init, py::arg("frame"), py::arg("box_or_polygon"),

@@ -27,8 +27,8 @@ struct Outcome {
 };
 
 Outcome run(const fs::path& dir, const std::string& args) {
-  const std::string command = "cd '" + dir.string() + "' && '" + std::string(SCBT_BINARY) +
-                              "' " + args + " > out.txt 2> err.txt";
+  const std::string command = "cd '" + dir.string() + "' && '" + std::string(SCBT_BINARY) + "' " +
+                              args + " > out.txt 2> err.txt";
   const int status = std::system(command.c_str());
   Outcome r;
   r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : 1000 + WTERMSIG(status);
@@ -74,8 +74,10 @@ std::vector<std::string> bad_values(const OptionSpec& spec) {
       return {format_option_value(spec.min - 1), format_option_value(spec.max + 1), "2.5", "abc"};
     case OptionType::kDouble: {
       std::vector<std::string> bad = {"abc", "nan"};
-      if (std::isfinite(spec.min)) bad.push_back(format_option_value(spec.min - (spec.min_open ? 0 : 1)));
-      if (std::isfinite(spec.max)) bad.push_back(format_option_value(spec.max + (spec.max_open ? 0 : 1)));
+      if (std::isfinite(spec.min))
+        bad.push_back(format_option_value(spec.min - (spec.min_open ? 0 : 1)));
+      if (std::isfinite(spec.max))
+        bad.push_back(format_option_value(spec.max + (spec.max_open ? 0 : 1)));
       return bad;
     }
   }

@@ -150,10 +150,10 @@ std::optional<OptionValue> option_value(XmlRpcValue& value) {
 std::vector<std::string> node_parameter_names() {
   std::vector<std::string> names;
   for (const OptionSpec& spec : tracker_option_table()) names.push_back(spec.name);
-  for (const char* own : {"use_depth", "min_depth", "max_depth", "sync_queue_size", "init_polygon",
-                          "init_box",
-                          // Read by image_transport: which transport (raw, compressed, ...).
-                          "image_transport"}) {
+  for (const char* own :
+       {"use_depth", "min_depth", "max_depth", "sync_queue_size", "init_polygon", "init_box",
+        // Read by image_transport: which transport (raw, compressed, ...).
+        "image_transport"}) {
     names.push_back(own);
   }
   return names;
@@ -168,7 +168,8 @@ TrackerOptions tracker_options_from_parameters(
     const std::optional<OptionValue> given = option_value(value);
     if (!given) {
       throw std::invalid_argument("parameter " + resolve(spec.name) + ": " + spec.name +
-                                  " must be " + spec.expected() + ", got " + type_name(value.getType()));
+                                  " must be " + spec.expected() + ", got " +
+                                  type_name(value.getType()));
     }
     try {
       set_tracker_option(&options, spec.name, *given);

@@ -1,8 +1,8 @@
 #include "scbt_ros/tracker_node.h"
 
+#include <diagnostic_msgs/DiagnosticArray.h>
 #include <geometry_msgs/PointStamped.h>
 #include <geometry_msgs/Vector3Stamped.h>
-#include <diagnostic_msgs/DiagnosticArray.h>
 #include <std_msgs/Float32.h>
 #include <std_msgs/String.h>
 

@@ -139,9 +139,9 @@ TEST(NodeOptions, LaunchFileHasAnArgumentPerOption) {
   for (const OptionSpec& spec : tracker_option_table()) {
     EXPECT_NE(text.str().find("<arg name=\"" + spec.name + "\" default=\"\"/>"), std::string::npos)
         << spec.name;
-    EXPECT_NE(text.str().find("<param name=\"" + spec.name + "\" value=\"$(arg " + spec.name +
-                              ")\""),
-              std::string::npos)
+    EXPECT_NE(
+        text.str().find("<param name=\"" + spec.name + "\" value=\"$(arg " + spec.name + ")\""),
+        std::string::npos)
         << spec.name;
   }
 }

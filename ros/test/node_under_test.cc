@@ -1,7 +1,7 @@
 #include "node_under_test.h"
 
-#include <sensor_msgs/RegionOfInterest.h>
 #include <diagnostic_msgs/DiagnosticArray.h>
+#include <sensor_msgs/RegionOfInterest.h>
 #include <std_msgs/Float32.h>
 #include <std_msgs/String.h>
 

@@ -61,7 +61,7 @@ class NodeUnderTest {
   ChildProcess process;
   Inbox<geometry_msgs::PolygonStamped> boundaries;
   Inbox<nlohmann::json> states;
-  Inbox<float> confidences;                             // ~confidence
+  Inbox<float> confidences;                              // ~confidence
   Inbox<diagnostic_msgs::DiagnosticStatus> diagnostics;  // this node's, from /diagnostics
 
  private:

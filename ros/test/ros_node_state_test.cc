@@ -90,7 +90,8 @@ TEST(RosNode, StateAndConfidenceFollowTheTrackerThroughAGap) {
   bool error_while_lost = false;
   bool ok_after = false;
   while (const auto status = node.diagnostics.pop(milliseconds(error_while_lost ? 200 : 3000))) {
-    if (status->level == diagnostic_msgs::DiagnosticStatus::ERROR && status->message.rfind("lost", 0) == 0) {
+    if (status->level == diagnostic_msgs::DiagnosticStatus::ERROR &&
+        status->message.rfind("lost", 0) == 0) {
       error_while_lost = true;
     }
     if (error_while_lost && status->level == diagnostic_msgs::DiagnosticStatus::OK) ok_after = true;

@@ -1,10 +1,10 @@
 // The frame's state as a standard diagnostic (for /diagnostics).
+#include "scbt_ros/state_report.h"
+
 #include <gtest/gtest.h>
 
 #include <map>
 #include <string>
-
-#include "scbt_ros/state_report.h"
 
 namespace scbt::ros_node {
 namespace {
@@ -43,10 +43,12 @@ TEST(DiagnosticStatus, LevelFollowsTheTrackingState) {
   result.state = TrackState::kLost;
   EXPECT_EQ(diagnostic_status(report, "n").level, DiagnosticStatus::ERROR);
 
-  EXPECT_EQ(diagnostic_status(FrameReport{FrameEvent::kWaiting}, "n").level, DiagnosticStatus::WARN);
+  EXPECT_EQ(diagnostic_status(FrameReport{FrameEvent::kWaiting}, "n").level,
+            DiagnosticStatus::WARN);
   EXPECT_EQ(diagnostic_status(FrameReport{FrameEvent::kFailed}, "n").level,
             DiagnosticStatus::ERROR);
-  const DiagnosticStatus initialised = diagnostic_status(FrameReport{FrameEvent::kInitialised}, "n");
+  const DiagnosticStatus initialised =
+      diagnostic_status(FrameReport{FrameEvent::kInitialised}, "n");
   EXPECT_EQ(initialised.level, DiagnosticStatus::OK);
   EXPECT_EQ(values(initialised)["state"], "tracking");
   EXPECT_EQ(values(initialised).count("confidence"), 0u);

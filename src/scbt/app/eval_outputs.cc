@@ -1,7 +1,5 @@
 #include "scbt/app/eval_outputs.h"
 
-#include "scbt/tracker/option_table.h"
-
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -11,6 +9,7 @@
 #include "scbt/app/eval_loss.h"
 #include "scbt/eval/plot.h"
 #include "scbt/io/atomic_file.h"
+#include "scbt/tracker/option_table.h"
 
 namespace scbt {
 namespace fs = std::filesystem;

@@ -31,7 +31,8 @@ void add_demo_command(CLI::App& app, int* exit_code) {
   auto tracker_flags = add_tracker_options(command);
   command->callback([options, tracker_flags, short_out, shape, no_video, exit_code] {
     if (!short_out->empty()) {
-      throw std::invalid_argument("demo writes a folder: give it as --out DIR (-o is track's results file)");
+      throw std::invalid_argument(
+          "demo writes a folder: give it as --out DIR (-o is track's results file)");
     }
     if (tracker_flags->apply(&options->tracker)) {
       *exit_code = kExitOk;

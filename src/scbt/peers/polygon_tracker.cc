@@ -43,7 +43,8 @@ std::string canonical_polygon_tracker_name(const std::string& name) {
 
 std::unique_ptr<PolygonTracker> make_polygon_tracker(const std::string& name,
                                                      const TrackerOptions& options) {
-  if (canonical_polygon_tracker_name(name) == "scbt") return std::make_unique<BdspPolygonTracker>(Tracker(options));
+  if (canonical_polygon_tracker_name(name) == "scbt")
+    return std::make_unique<BdspPolygonTracker>(Tracker(options));
   if (name == "ecc") return std::make_unique<EccTracker>();
   if (name == "klt") return std::make_unique<KltTracker>();
   if (name == "csrt") return std::make_unique<CsrtTracker>();

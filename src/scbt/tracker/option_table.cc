@@ -95,13 +95,14 @@ std::vector<OptionSpec> make_table() {
   };
   t.push_back(detector);
   t.push_back(int_row("gradient_threshold", kDetection, "EDLines gradient threshold (Sobel)", 1,
-                      255, [](TrackerOptions& o) -> int& { return o.detector.gradient_threshold; }));
+                      255,
+                      [](TrackerOptions& o) -> int& { return o.detector.gradient_threshold; }));
   t.push_back(int_row("anchor_threshold", kDetection, "EDLines anchor threshold", 0, 255,
                       [](TrackerOptions& o) -> int& { return o.detector.anchor_threshold; }));
-  t.push_back(double_row(
-      "min_line_length", kDetection,
-      "Shortest segment kept (px); <= 0: EDLines derives it from the frame size", -kInf, false,
-      10000.0, false, [](TrackerOptions& o) -> double& { return o.detector.min_line_length; }));
+  t.push_back(double_row("min_line_length", kDetection,
+                         "Shortest segment kept (px); <= 0: EDLines derives it from the frame size",
+                         -kInf, false, 10000.0, false,
+                         [](TrackerOptions& o) -> double& { return o.detector.min_line_length; }));
 
   t.push_back(double_row(
       "filter_distance", kGrouping,
@@ -388,8 +389,7 @@ std::string tracker_options_repr(const TrackerOptions& options) {
     if (spec.type == OptionType::kBool) shown = std::get<bool>(value) ? "True" : "False";
     if (spec.type == OptionType::kChoice) shown = quoted(shown);
     // Python's repr of a float keeps a decimal point.
-    if (spec.type == OptionType::kDouble &&
-        shown.find_first_of(".en") == std::string::npos) {
+    if (spec.type == OptionType::kDouble && shown.find_first_of(".en") == std::string::npos) {
       shown += ".0";
     }
     text += (first ? "" : ", ") + spec.name + "=" + shown;

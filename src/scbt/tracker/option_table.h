@@ -32,7 +32,7 @@ class OptionTypeError : public std::invalid_argument {
 };
 
 struct OptionSpec {
-  std::string name;   // snake_case: keyword, parameter and config key; the CLI flag is --dashed
+  std::string name;  // snake_case: keyword, parameter and config key; the CLI flag is --dashed
   OptionType type = OptionType::kDouble;
   std::string group;  // the heading it is listed under
   std::string help;   // one line
@@ -41,7 +41,7 @@ struct OptionSpec {
   double max = 0.0;
   bool min_open = false;
   bool max_open = false;
-  std::vector<std::string> choices;  // kChoice: the accepted names
+  std::vector<std::string> choices;                          // kChoice: the accepted names
   std::vector<std::pair<std::string, std::string>> aliases;  // kChoice: other name -> choice
   std::function<OptionValue(const TrackerOptions&)> get;
   std::function<void(TrackerOptions*, const OptionValue&)> set;  // a checked, normalised value
