@@ -3,6 +3,7 @@ TrackerOptions and a property of TrackerOptions, and every bad value is refused 
 the CLI and config files give (tests/cli_options_test.cc walks those)."""
 
 import math
+import pathlib
 import pydoc
 
 import numpy as np
@@ -178,3 +179,20 @@ def test_polygons_round_trip_through_a_file(tmp_path):
         scbt.read_polygons(str(path))
     with pytest.raises(ValueError, match="cannot open"):
         scbt.read_polygons(str(tmp_path / "missing.txt"))
+
+
+def test_stub_and_docs_list_every_option():
+    root = pathlib.Path(__file__).resolve().parents[2]
+    stub = (root / "python" / "scbt.pyi").read_text()
+    cli_doc = (root / "docs" / "cli.md").read_text()
+    python_doc = (root / "docs" / "python.md").read_text()
+    for row in TABLE:
+        name = row["name"]
+        assert stub.count(f"        {name}: ") == 2, name  # TrackerOptions and Tracker
+        assert f"    {name}: " in stub, name  # the property
+        default = row["default"]
+        shown = default if isinstance(default, str) else number(default)
+        if isinstance(default, bool):
+            shown = str(default).lower()
+        assert f"| `{row['flag']}` | {shown} | {row['range']} |" in cli_doc, row["flag"]
+        assert f"| `{name}` |" in python_doc, name
