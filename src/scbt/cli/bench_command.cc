@@ -28,9 +28,9 @@ void add_bench_command(CLI::App& app, int* exit_code) {
                    "Pixels added around the filter band of the detection window")
       ->capture_default_str();
   command->add_flag("-q,--quiet", options->quiet, "No progress bars");
-  auto tracker_flags = add_tracker_options(command);
-  command->callback([options, tracker_flags, full_frame, no_compare, exit_code] {
-    if (tracker_flags->apply(&options->tracker)) {
+  auto flags = add_tracker_options(command);
+  command->callback([options, flags, full_frame, no_compare, exit_code] {
+    if (flags->apply(&options->tracker)) {
       *exit_code = kExitOk;
       return;
     }

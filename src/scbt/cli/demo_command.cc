@@ -26,15 +26,13 @@ void add_demo_command(CLI::App& app, int* exit_code) {
   command->add_flag("--no-video", *no_video, "Do not write the annotated demo.avi");
   command->add_flag("-q,--quiet", options->quiet, "No progress bar and no summary");
   // -o is `track`'s results file; this command writes a folder.
-  auto short_out = std::make_shared<std::string>();
-  command->add_option("-o", *short_out)->group("");
-  auto tracker_flags = add_tracker_options(command);
-  command->callback([options, tracker_flags, short_out, shape, no_video, exit_code] {
-    if (!short_out->empty()) {
-      throw std::invalid_argument(
-          "demo writes a folder: give it as --out DIR (-o is track's results file)");
-    }
-    if (tracker_flags->apply(&options->tracker)) {
+  command->add_option("-o")->group("")->each([](const std::string&) {
+    throw std::invalid_argument(
+        "demo writes a folder: give it as --out DIR (-o is track's results file)");
+  });
+  auto flags = add_tracker_options(command);
+  command->callback([options, flags, shape, no_video, exit_code] {
+    if (flags->apply(&options->tracker)) {
       *exit_code = kExitOk;
       return;
     }

@@ -77,44 +77,41 @@ void add_eval_command(CLI::App& app, int* exit_code) {
   command->add_flag("-q,--quiet", options->quiet, "No progress output");
   command->add_flag("--list", *list, "List the trackers and the dataset's sequences, then exit");
   // -o is `track`'s results file; this command writes a folder.
-  auto short_out = std::make_shared<std::string>();
-  command->add_option("-o", *short_out)->group("");
-  auto tracker_flags = add_tracker_options(command);
-  command->callback(
-      [options, tracker_flags, short_out, list, no_plot, perturb, perturb_seed, gaps, exit_code] {
-        if (!short_out->empty()) {
-          throw std::invalid_argument(
-              "eval writes a folder: give it as --out DIR (-o is track's results file)");
-        }
-        if (tracker_flags->apply(&options->tracker)) {
-          *exit_code = kExitOk;
-          return;
-        }
-        if (*list) {
-          list_dataset(*options);
-          *exit_code = 0;
-          return;
-        }
-        options->plot = !*no_plot;
-        if (*gaps) {
-          if (!perturb->empty())
-            throw std::invalid_argument("--gaps cannot be combined with --perturb");
-          const GapEvalSummary summary = run_gap_evals(*options, std::cerr);
-          if (!options->quiet) std::cout << summary.files.front() << '\n';
-          *exit_code = 0;
-          return;
-        }
-        if (!perturb->empty()) {
-          const PerturbedEvalSummary summary = run_perturbed_evals(
-              *options, parse_perturbation_list(*perturb, *perturb_seed), std::cerr);
-          if (!options->quiet) std::cout << summary.files.front() << '\n';
-          *exit_code = 0;
-          return;
-        }
-        const EvalRunSummary summary = run_eval(*options, std::cerr);
-        if (!options->quiet) std::cout << summary.files.front() << '\n';
-        *exit_code = 0;
-      });
+  command->add_option("-o")->group("")->each([](const std::string&) {
+    throw std::invalid_argument(
+        "eval writes a folder: give it as --out DIR (-o is track's results file)");
+  });
+  auto flags = add_tracker_options(command);
+  command->callback([options, flags, list, no_plot, perturb, perturb_seed, gaps, exit_code] {
+    if (flags->apply(&options->tracker)) {
+      *exit_code = kExitOk;
+      return;
+    }
+    if (*list) {
+      list_dataset(*options);
+      *exit_code = 0;
+      return;
+    }
+    options->plot = !*no_plot;
+    if (*gaps) {
+      if (!perturb->empty())
+        throw std::invalid_argument("--gaps cannot be combined with --perturb");
+      const GapEvalSummary summary = run_gap_evals(*options, std::cerr);
+      if (!options->quiet) std::cout << summary.files.front() << '\n';
+      *exit_code = 0;
+      return;
+    }
+    if (!perturb->empty()) {
+      const PerturbedEvalSummary summary = run_perturbed_evals(
+          *options, parse_perturbation_list(*perturb, *perturb_seed), std::cerr);
+      if (!options->quiet) std::cout << summary.files.front() << '\n';
+      *exit_code = 0;
+      return;
+    }
+    const EvalRunSummary summary = run_eval(*options, std::cerr);
+    if (!options->quiet) std::cout << summary.files.front() << '\n';
+    *exit_code = 0;
+  });
 }
 
 }  // namespace scbt::cli

@@ -95,10 +95,10 @@ void add_track_command(CLI::App& app, int* exit_code) {
       ->check(CLI::IsMember({"hold", "stop"}));
   command->add_flag("-q,--quiet", options->quiet, "No progress bar and no summary");
   add_depth_options(command, &options->depth);
-  auto tracker_flags = add_tracker_options(command);
+  auto flags = add_tracker_options(command);
   auto live = add_live_options(command);
-  command->callback([options, tracker_flags, live, on_bad_frame, exit_code] {
-    if (tracker_flags->apply(&options->tracker)) {
+  command->callback([options, flags, live, on_bad_frame, exit_code] {
+    if (flags->apply(&options->tracker)) {
       *exit_code = kExitOk;
       return;
     }
