@@ -186,7 +186,9 @@ TEST_F(CliOptionsTest, EveryBadValueIsRefusedWithTheSameMessage) {
 
 // The flags override the config file, whatever their order on the command line.
 TEST_F(CliOptionsTest, FlagsOverrideTheConfigFile) {
-  write(dir_ / "options.yaml", "shape_weight: 2\nseed_stride: 3\npredict_motion: false\n");
+  write(dir_ / "options.yaml",
+        "---\n# as rosparam writes them\nshape_weight: 2\nseed_stride: 3  # faster\n"
+        "predict_motion: false\n");
   const Outcome r = run(dir_, "track --shape-weight 1.5 --config options.yaml --print-config");
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_NE(r.out.find("shape_weight: 1.5\n"), std::string::npos) << r.out;

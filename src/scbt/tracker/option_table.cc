@@ -276,7 +276,7 @@ std::string storage_text(const std::string& path) {
   const size_t first = text.find_first_not_of(" \t\r\n");
   if (first == std::string::npos) return "{}";
   if (text[first] != '{' && text.compare(first, 5, "%YAML") != 0) {
-    text = "%YAML:1.0\n---\n" + text;
+    text = (text.compare(first, 3, "---") == 0 ? "%YAML:1.0\n" : "%YAML:1.0\n---\n") + text;
   }
   return text;
 }
