@@ -14,6 +14,7 @@
 #include <map>
 #include <mutex>
 #include <thread>
+#include <utility>
 
 #include "scbt/eval/alignment_error.h"
 #include "scbt/eval/dataset.h"
@@ -127,10 +128,14 @@ int main(int argc, char** argv) {
   app.add_option("--shape-weight", options.shape_weight);
   app.add_option("--recover-by-motion", options.recover_by_motion);
   app.add_option("--predict-motion", options.predict_motion);
-  app.add_option("--confirm-motion", options.confirm_motion);
-  app.add_option("--measure-motion", options.measure_motion);
-  app.add_option("--fall-back-unmoved", options.fall_back_unmoved);
-  app.add_option("--gate-sustained-shrink", options.gate_sustained_shrink);
+  // Switches that act only with --predict-motion: off with it unless given.
+  const std::pair<CLI::Option*, bool*> with_prediction[] = {
+      {app.add_option("--confirm-motion", options.confirm_motion), &options.confirm_motion},
+      {app.add_option("--measure-motion", options.measure_motion), &options.measure_motion},
+      {app.add_option("--fall-back-unmoved", options.fall_back_unmoved),
+       &options.fall_back_unmoved},
+      {app.add_option("--gate-sustained-shrink", options.gate_sustained_shrink),
+       &options.gate_sustained_shrink}};
   app.add_option("--smooth-noisy-frames", options.smooth_noisy_frames);
   app.add_option("--min-predicted-move", options.min_predicted_move);
   app.add_option("--min-motion-agreement", options.min_motion_agreement);
@@ -146,6 +151,9 @@ int main(int argc, char** argv) {
   app.add_option("--smoothed-noise", options.adaptive_thresholds.smoothed_noise);
   app.add_option("--loss-handling", options.loss.enabled);
   CLI11_PARSE(app, argc, argv);
+  for (const auto& [flag, value] : with_prediction) {
+    if (!options.predict_motion && flag->count() == 0) *value = false;
+  }
   try {
     options.check();
     const std::vector<scbt::Perturbation> perturbations =

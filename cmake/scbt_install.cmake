@@ -14,7 +14,7 @@ set(SCBT_PUBLIC_HEADERS
     graph/segment_graph.h
     cycles/bdsp.h cycles/segment_units.h
     choice/boundary_choice.h choice/boundary_distance_cache.h
-    tracker/tracker.h tracker/tracker_options.h tracker/track_state.h tracker/confidence.h
+    tracker/tracker.h tracker/tracker_options.h tracker/option_table.h tracker/track_state.h tracker/confidence.h
     tracker/box_init.h tracker/cycle_stage.h tracker/motion_model.h tracker/reacquire.h
     tracker/contrast_profile.h tracker/frame_checks.h tracker/scene_keyframes.h
     tracker/motion_estimate.h tracker/phase_correlation.h tracker/shape_memory.h

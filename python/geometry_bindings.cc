@@ -3,7 +3,10 @@
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 
+#include <fstream>
+#include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "bindings.h"
 #include "convert.h"
@@ -17,6 +20,48 @@ namespace py = pybind11;
 namespace scbt {
 
 void register_geometry(py::module_& m) {
+  m.def(
+      "read_polygons",
+      [](const std::string& path) {
+        std::vector<std::string> lines;
+        try {
+          lines = read_text_lines(path);
+        } catch (const std::runtime_error& e) {
+          throw py::value_error(e.what());
+        }
+        py::list polygons;
+        for (size_t i = 0; i < lines.size(); ++i) {
+          if (lines[i].find_first_not_of(" \t") == std::string::npos) continue;
+          Polygon polygon;
+          std::string error;
+          if (!try_parse_polygon_line(lines[i], &polygon, &error)) {
+            throw py::value_error(path + ":" + std::to_string(i + 1) + ": " + error);
+          }
+          polygons.append(polygon_to_array(polygon));
+        }
+        return polygons;
+      },
+      py::arg("path"),
+      "The polygons of a results or ground-truth file, one per line (\"n x1 y1 ... xn yn\"),\n"
+      "as a list of (N, 2) float64 arrays; blank lines are skipped. Raises ValueError naming\n"
+      "the file and line of a malformed one.");
+  m.def(
+      "write_polygons",
+      [](const std::string& path, const py::iterable& polygons) {
+        std::string text;
+        for (const py::handle& item : polygons) {
+          text += format_polygon_line(
+                      array_to_polygon(py::reinterpret_borrow<py::object>(item), "polygon")) +
+                  "\n";
+        }
+        std::ofstream out(path, std::ios::binary | std::ios::trunc);
+        if (!(out << text) || !out.flush()) {
+          throw py::value_error(path + ": cannot write");
+        }
+      },
+      py::arg("path"), py::arg("polygons"),
+      "Writes (N, 2) polygons one per line in the format `scbt track -o` writes and\n"
+      "read_polygons() reads (two decimals).");
   m.def(
       "alignment_error",
       [](const py::object& tracked, const py::object& truth, py::tuple canvas_size) {

@@ -110,17 +110,10 @@ class BoundaryChoice:
     @property
     def num_admissible(self) -> int: ...
 
-class Tracker:
-    """The salient closed boundary tracker.
-
-    Keyword options (paper defaults): detector='edlines' ('opencv-edlines', 'lsd', 'fld'),
-    gradient_threshold=36, anchor_threshold=8, scan_interval=1, sigma=1.0,
-    min_line_length=-1.0 (automatic), line_fit_error=1.0, crop_to_boundary=True,
-    roi_padding=8.0, filter_distance=20.0, min_area_similarity=0.9, cost_tolerance=0.1,
-    similarity_exponent=0.5, shape_weight=4.0, max_segments=1500, seed_stride=2, loss_handling=True,
-    normalize_exposure=True, adapt_to_blur=True, predict_motion=True, keep_debug=False.
-    Raises ValueError naming a bad value, TypeError for an unknown option.
-    """
+class TrackerOptions:
+    """The tracker options a user tunes (the CLI's flags with underscores, ROS's parameters,
+    a config file's keys). help(scbt.TrackerOptions) lists them with defaults and ranges.
+    Raises ValueError for a bad value, TypeError for a wrong type or an unknown name."""
 
     def __init__(
         self,
@@ -128,40 +121,96 @@ class Tracker:
         detector: str = ...,
         gradient_threshold: int = ...,
         anchor_threshold: int = ...,
-        scan_interval: int = ...,
-        sigma: float = ...,
         min_line_length: float = ...,
-        line_fit_error: float = ...,
-        crop_to_boundary: bool = ...,
-        roi_padding: float = ...,
         filter_distance: float = ...,
-        min_area_similarity: float = ...,
-        cost_tolerance: float = ...,
-        similarity_exponent: float = ...,
-        shape_weight: float = ...,
         max_segments: int = ...,
         seed_stride: int = ...,
-        loss_handling: bool = ...,
+        min_area_similarity: float = ...,
+        shape_weight: float = ...,
+        object_memory: bool = ...,
+        predict_motion: bool = ...,
+        recover_by_motion: bool = ...,
         normalize_exposure: bool = ...,
         adapt_to_blur: bool = ...,
-        predict_motion: bool = ...,
-        keep_debug: bool = ...,
+        smooth_noisy_frames: bool = ...,
+        loss_handling: bool = ...,
     ) -> None: ...
-    def init(self, frame: Frame, polygon: PolygonLike) -> None: ...
+    detector: str  # 'edlines', 'opencv-edlines', 'lsd' or 'fld'
+    gradient_threshold: int
+    anchor_threshold: int
+    min_line_length: float
+    filter_distance: float
+    max_segments: int
+    seed_stride: int
+    min_area_similarity: float
+    shape_weight: float
+    object_memory: bool
+    predict_motion: bool
+    recover_by_motion: bool
+    normalize_exposure: bool
+    adapt_to_blur: bool
+    smooth_noisy_frames: bool
+    loss_handling: bool
+    @staticmethod
+    def from_file(path: str) -> TrackerOptions: ...
+    def to_text(self, *, json: bool = False) -> str: ...
+    def as_dict(self) -> dict[str, Union[str, int, float, bool]]: ...
+    def keys(self) -> list[str]: ...
+    def __getitem__(self, name: str) -> Union[str, int, float, bool]: ...
+
+def option_table() -> list[dict[str, Any]]: ...
+
+class Tracker:
+    """The salient closed boundary tracker.
+
+    Tracker(options=None, *, keep_debug=False, **options): a TrackerOptions and/or the same
+    options as keyword arguments (which override it).
+    """
+
+    def __init__(
+        self,
+        options: Optional[TrackerOptions] = None,
+        *,
+        keep_debug: bool = False,
+        detector: str = ...,
+        gradient_threshold: int = ...,
+        anchor_threshold: int = ...,
+        min_line_length: float = ...,
+        filter_distance: float = ...,
+        max_segments: int = ...,
+        seed_stride: int = ...,
+        min_area_similarity: float = ...,
+        shape_weight: float = ...,
+        object_memory: bool = ...,
+        predict_motion: bool = ...,
+        recover_by_motion: bool = ...,
+        normalize_exposure: bool = ...,
+        adapt_to_blur: bool = ...,
+        smooth_noisy_frames: bool = ...,
+        loss_handling: bool = ...,
+    ) -> None: ...
+    def init(
+        self, frame: Frame, box_or_polygon: Union[Tuple[float, float, float, float], PolygonLike]
+    ) -> FloatArray: ...
     def init_from_box(
         self, frame: Frame, box: Tuple[float, float, float, float]
     ) -> FloatArray: ...
+    def update(self, frame: Frame) -> Tuple[bool, FloatArray]: ...
     def track(self, frame: Frame) -> Tuple[FloatArray, FrameStats]: ...
     @property
     def boundary(self) -> Optional[FloatArray]: ...
     @property
     def initialized(self) -> bool: ...
     @property
-    def options(self) -> dict[str, Union[str, int, float, bool]]: ...
+    def options(self) -> TrackerOptions: ...
+    @property
+    def keep_debug(self) -> bool: ...
     def detected_segments(self) -> FloatArray: ...
     def graph(self) -> SegmentGraph: ...
     def annotate(self, frame: Frame, status: Optional[str] = None) -> npt.NDArray[np.uint8]: ...
 
+def read_polygons(path: str) -> list[FloatArray]: ...
+def write_polygons(path: str, polygons: Sequence[PolygonLike]) -> None: ...
 def detect_line_segments(
     image: Frame,
     *,

@@ -5,6 +5,7 @@
 
 #include "bindings.h"
 #include "depth_bindings.h"
+#include "options_bindings.h"
 #include "scbt/version.h"
 
 PYBIND11_MODULE(scbt, m) {
@@ -18,6 +19,7 @@ PYBIND11_MODULE(scbt, m) {
       "arrays of x1, y1, x2, y2. Bad options raise ValueError, wrong types TypeError.";
   m.attr("__version__") = SCBT_VERSION;
 
+  register_options(m);
   register_tracker(m);
   register_stages(m);
   register_geometry(m);

@@ -7,15 +7,16 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <memory>
 #include <mutex>
 #include <opencv2/core/mat.hpp>
-#include <set>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
 #include "bindings.h"
 #include "convert.h"
+#include "options_bindings.h"
 #include "readonly_record.h"
 #include "scbt/render/annotate.h"
 #include "scbt/tracker/tracker.h"
@@ -43,92 +44,29 @@ cv::Rect box_from_object(const py::object& object) {
       static_cast<int>(std::lround(values[2])), static_cast<int>(std::lround(values[3])));
 }
 
-TrackerOptions tracker_options_from_kwargs(const py::kwargs& kwargs, bool* keep_debug) {
-  TrackerOptions options;
-  std::set<std::string> used;
-  with_option_names(kwargs, [&] {
-    apply_detector_kwargs(kwargs, &options.detector, &used);
-    for (auto item : kwargs) {
-      const std::string key = py::str(item.first).cast<std::string>();
-      const py::handle value = item.second;
-      bool known = true;
-      if (key == "filter_distance") {
-        options.filter_distance = value.cast<double>();
-      } else if (key == "min_area_similarity") {
-        options.min_area_similarity = value.cast<double>();
-      } else if (key == "cost_tolerance") {
-        options.cost_tolerance = value.cast<double>();
-      } else if (key == "similarity_exponent") {
-        options.similarity_exponent = value.cast<double>();
-      } else if (key == "shape_weight") {
-        options.shape_weight = value.cast<double>();
-      } else if (key == "max_segments") {
-        options.max_segments = value.cast<int>();
-      } else if (key == "seed_stride") {
-        options.bdsp.seed_stride = value.cast<int>();
-      } else if (key == "loss_handling") {
-        options.loss.enabled = value.cast<bool>();
-      } else if (key == "normalize_exposure") {
-        options.exposure.normalize = value.cast<bool>();
-      } else if (key == "adapt_to_blur") {
-        options.blur.adapt = value.cast<bool>();
-      } else if (key == "predict_motion") {
-        options.predict_motion = value.cast<bool>();
-      } else if (key == "keep_debug") {
-        *keep_debug = value.cast<bool>();
-      } else {
-        known = false;
-      }
-      if (known) used.insert(key);
-    }
-  });
-  reject_unknown(kwargs, used, "Tracker");
-  return options;
-}
-
-py::dict options_to_dict(const TrackerOptions& o, bool keep_debug) {
-  py::dict d;
-  d["detector"] = to_string(o.detector.kind);
-  d["gradient_threshold"] = o.detector.gradient_threshold;
-  d["anchor_threshold"] = o.detector.anchor_threshold;
-  d["scan_interval"] = o.detector.scan_interval;
-  d["sigma"] = o.detector.sigma;
-  d["min_line_length"] = o.detector.min_line_length;
-  d["line_fit_error"] = o.detector.line_fit_error;
-  d["crop_to_boundary"] = o.detector.crop_to_boundary;
-  d["roi_padding"] = o.detector.roi_padding;
-  d["max_segments"] = o.max_segments;
-  d["filter_distance"] = o.filter_distance;
-  d["min_area_similarity"] = o.min_area_similarity;
-  d["cost_tolerance"] = o.cost_tolerance;
-  d["similarity_exponent"] = o.similarity_exponent;
-  d["shape_weight"] = o.shape_weight;
-  d["seed_stride"] = o.bdsp.seed_stride;
-  d["loss_handling"] = o.loss.enabled;
-  d["normalize_exposure"] = o.exposure.normalize;
-  d["adapt_to_blur"] = o.blur.adapt;
-  d["predict_motion"] = o.predict_motion;
-  d["keep_debug"] = keep_debug;
-  return d;
-}
-
 // The Python-facing tracker: the C++ Tracker plus a lock, since track() runs without the GIL
 // and two Python threads could otherwise call into the same tracker at once.
 class PyTracker {
  public:
-  explicit PyTracker(const py::kwargs& kwargs) {
-    const TrackerOptions options = tracker_options_from_kwargs(kwargs, &keep_debug_);
-    tracker_ = Tracker(options);
+  PyTracker(const TrackerOptions& options, bool keep_debug)
+      : tracker_(options), keep_debug_(keep_debug) {
     tracker_.set_keep_debug(keep_debug_);
   }
 
-  void init(const py::object& frame_object, const py::object& polygon_object) {
+  // A box (x, y, w, h) is four numbers in a row; a polygon is (N, 2).
+  py::array_t<double> init(const py::object& frame_object, const py::object& shape) {
+    const py::array values = py::array::ensure(shape);
+    if (values && values.ndim() == 1 && values.size() == 4)
+      return init_from_box(frame_object, shape);
     py::array keep;
     const cv::Mat frame = frame_to_mat(frame_object, "frame", &keep);
-    const Polygon polygon = array_to_polygon(polygon_object, "polygon");
-    py::gil_scoped_release release;
-    std::lock_guard<std::mutex> lock(mutex_);
-    tracker_.init(frame, polygon);
+    const Polygon polygon = array_to_polygon(shape, "polygon");
+    {
+      py::gil_scoped_release release;
+      std::lock_guard<std::mutex> lock(mutex_);
+      tracker_.init(frame, polygon);
+    }
+    return polygon_to_array(polygon);
   }
 
   py::array_t<double> init_from_box(const py::object& frame_object, const py::object& box_object) {
@@ -161,6 +99,14 @@ class PyTracker {
     return py::make_tuple(boundary, result);
   }
 
+  // OpenCV's Tracker.update: whether the object was found in `frame`, and its boundary.
+  py::tuple update(const py::object& frame_object) {
+    const py::tuple tracked = track(frame_object);
+    const TrackResult& stats = tracked[1].cast<const TrackResult&>();
+    const bool found = !stats.held && stats.state != TrackState::kLost;
+    return py::make_tuple(found, tracked[0]);
+  }
+
   py::object boundary() {
     std::lock_guard<std::mutex> lock(mutex_);
     if (!tracker_.initialized()) return py::none();
@@ -170,7 +116,8 @@ class PyTracker {
     std::lock_guard<std::mutex> lock(mutex_);
     return tracker_.initialized();
   }
-  py::dict options() { return options_to_dict(tracker_.options(), keep_debug_); }
+  TrackerOptions options() { return tracker_.options(); }
+  bool keep_debug() const { return keep_debug_; }
 
   py::array_t<double> detected_segments() {
     std::lock_guard<std::mutex> lock(mutex_);
@@ -294,26 +241,36 @@ void register_tracker(py::module_& m) {
   py::class_<PyTracker>(
       m, "Tracker",
       "The salient closed boundary tracker.\n\n"
-      "Tracker(**options) with keyword options (paper defaults):\n"
-      "  detector='edlines' ('opencv-edlines', 'lsd', 'fld'), gradient_threshold=36,\n"
-      "  anchor_threshold=8, scan_interval=1, sigma=1.0,\n"
-      "  min_line_length=-1 (automatic), line_fit_error=1.0,\n"
-      "  crop_to_boundary=True, roi_padding=8.0, filter_distance=20.0,\n"
-      "  min_area_similarity=0.9, cost_tolerance=0.1, similarity_exponent=0.5,\n"
-      "  shape_weight=4.0, max_segments=1500,\n"
-      "  seed_stride=2, loss_handling=True, normalize_exposure=True, adapt_to_blur=True,\n"
-      "  predict_motion=True, keep_debug=False.\n"
-      "Raises ValueError naming a bad value, TypeError for an unknown option.")
-      .def(py::init<const py::kwargs&>())
-      .def("init", &PyTracker::init, py::arg("frame"), py::arg("polygon"),
-           "Sets the initial boundary: `polygon` is an (N, 2) array inside `frame`.\n"
-           "Raises ValueError for an unusable polygon (fewer than 3 distinct vertices, no area,\n"
-           "self-crossing, outside the frame).")
+      "Tracker(options=None, *, keep_debug=False, **options): `options` a TrackerOptions, the\n"
+      "keyword arguments the same options by name (shape_weight=2.0, predict_motion=False, ...;\n"
+      "help(scbt.TrackerOptions) lists them with their defaults and ranges); keyword arguments\n"
+      "override `options`. keep_debug=True keeps the last frame's segments and graph\n"
+      "(detected_segments(), graph()). Raises ValueError naming a bad value, TypeError for an\n"
+      "unknown option or a value of the wrong type.\n\n"
+      "    tracker = scbt.Tracker(shape_weight=2.0)\n"
+      "    tracker.init(frame, (x, y, w, h))        # or an (N, 2) polygon\n"
+      "    ok, boundary = tracker.update(next_frame)")
+      .def(py::init([](const py::object& options, bool keep_debug, const py::kwargs& kwargs) {
+             return std::make_unique<PyTracker>(options_from_python(options, kwargs, "Tracker", {}),
+                                                keep_debug);
+           }),
+           py::arg("options") = py::none(), py::kw_only(), py::arg("keep_debug") = false)
+      .def("init", &PyTracker::init, py::arg("frame"), py::arg("box_or_polygon"),
+           "Starts tracking on `frame` from a box (x, y, w, h), whose most salient closed\n"
+           "boundary is taken (as init_from_box), or from a polygon, an (N, 2) array inside the\n"
+           "frame. Returns the initial boundary as an (N, 2) array. Raises ValueError for an\n"
+           "unusable polygon or box (fewer than 3 distinct vertices, no area, self-crossing,\n"
+           "outside the frame), RuntimeError when the box holds no closed boundary.")
       .def("init_from_box", &PyTracker::init_from_box, py::arg("frame"), py::arg("box"),
-           "Initialises from a box (x, y, w, h) instead of a polygon: the most salient closed\n"
-           "boundary inside it (the least-Γ cycle of the segments detected there) becomes the\n"
-           "initial boundary and is returned as an (N, 2) array. Raises ValueError for a bad\n"
-           "frame or box, RuntimeError when the box holds no closed boundary.")
+           "Initialises from a box (x, y, w, h): the most salient closed boundary inside it\n"
+           "(the least-cost cycle of the segments detected there) becomes the initial boundary\n"
+           "and is returned as an (N, 2) array. Raises ValueError for a bad frame or box,\n"
+           "RuntimeError when the box holds no closed boundary.")
+      .def("update", &PyTracker::update, py::arg("frame"),
+           "Tracks the boundary into `frame`, as OpenCV's trackers' update(): returns\n"
+           "(ok, boundary), ok False when nothing was found on this frame (the previous\n"
+           "boundary held) or the object is lost, boundary an (N, 2) float64 array (while\n"
+           "lost, the last confident one). track() returns the frame's statistics too.")
       .def("track", &PyTracker::track, py::arg("frame"),
            "Tracks the boundary into `frame` (the GIL is released meanwhile).\n"
            "Returns (boundary, stats): an (N, 2) float64 array and a FrameStats. When no\n"
@@ -321,8 +278,12 @@ void register_tracker(py::module_& m) {
            "while stats.state is 'lost' it is the last confident boundary.")
       .def_property_readonly("boundary", &PyTracker::boundary,
                              "The current boundary as an (N, 2) array, None before init().")
-      .def_property_readonly("initialized", &PyTracker::initialized)
-      .def_property_readonly("options", &PyTracker::options, "The options as a dict.")
+      .def_property_readonly("initialized", &PyTracker::initialized,
+                             "True once init() has set a boundary.")
+      .def_property_readonly("options", &PyTracker::options,
+                             "The tracker's options, a TrackerOptions (options['name'] reads one).")
+      .def_property_readonly("keep_debug", &PyTracker::keep_debug,
+                             "Whether the last frame's segments and graph are kept.")
       .def("detected_segments", &PyTracker::detected_segments,
            "All segments detected in the last tracked frame, (M, 4) (needs keep_debug=True).")
       .def("graph", &PyTracker::debug_graph,

@@ -15,6 +15,7 @@ packages=(
   python3-venv python3-pip python3-setuptools python3-wheel
   xvfb xdotool x11-apps imagemagick
   ros-core-dev libroscpp-dev libsensor-msgs-dev libgeometry-msgs-dev libstd-msgs-dev
+  libdiagnostic-msgs-dev
   libcv-bridge-dev libimage-transport-dev libmessage-filters-dev
   python3-rosmaster python3-rospy python3-rostopic python3-rosbag python3-roslaunch rosout
   python3-sensor-msgs python3-geometry-msgs python3-std-msgs nlohmann-json3-dev

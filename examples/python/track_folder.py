@@ -16,16 +16,6 @@ import numpy as np
 import scbt
 
 
-def read_first_polygon(path):
-    values = pathlib.Path(path).read_text().split("\n", 1)[0].split()
-    n = int(values[0])
-    return np.array(values[1 : 1 + 2 * n], dtype=float).reshape(n, 2)
-
-
-def format_polygon(polygon):
-    return " ".join([str(len(polygon))] + [f"{v:.2f}" for v in np.asarray(polygon).ravel()])
-
-
 def main(argv):
     if len(argv) != 3:
         sys.exit(f"usage: {argv[0]} FRAMES_DIR INIT_POLYGON_FILE  (scbt {scbt.__version__})")
@@ -33,9 +23,8 @@ def main(argv):
                    if p.suffix.lower() in (".png", ".jpg", ".jpeg"))
     if not paths:
         sys.exit(f"no .png or .jpg frames in {argv[1]}")
-    tracker = scbt.Tracker()  # default options: the paper's settings
-    tracker.init(cv2.imread(str(paths[0])), read_first_polygon(argv[2]))
-    print(format_polygon(tracker.boundary))
+    tracker = scbt.Tracker()  # default options (scbt.TrackerOptions lists them)
+    print(format_polygon(tracker.init(cv2.imread(str(paths[0])), scbt.read_polygons(argv[2])[0])))
     for number, path in enumerate(paths[1:], start=2):
         boundary, stats = tracker.track(cv2.imread(str(path)))
         print(format_polygon(boundary))

@@ -85,8 +85,9 @@ def test_views_are_read_without_copy_and_match_copies(moving_pentagon):
 def test_gil_released_while_tracking():
     truth = pentagon((640, 480), 300)
     frame = render(truth, size=(1280, 960), clutter=3000)
-    # Whole-frame detection with OpenCV's EdgeDrawing: slow enough to see another thread run.
-    tracker = scbt.Tracker(filter_distance=40, crop_to_boundary=False, detector="opencv-edlines")
+    # Detection over the whole frame (the widest band) with OpenCV's EdgeDrawing: slow enough to
+    # see another thread run.
+    tracker = scbt.Tracker(filter_distance=1000, max_segments=100, detector="opencv-edlines")
     tracker.init(frame, truth)
     start = time.perf_counter()
     tracker.track(frame)

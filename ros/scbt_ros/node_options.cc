@@ -8,6 +8,7 @@
 #include <stdexcept>
 
 #include "scbt/geometry/polygon_io.h"
+#include "scbt/tracker/option_table.h"
 
 namespace scbt::ros_node {
 namespace {
@@ -128,19 +129,56 @@ std::optional<std::vector<double>> read_numbers(const ros::NodeHandle& node,
   return numbers;
 }
 
-// The parameters the node reads, without the leading '~'.
-const std::vector<std::string>& known_parameters() {
-  static const std::vector<std::string> names = {
-      "detector", "filter_distance", "min_area_similarity", "cost_tolerance", "similarity_exponent",
-      "shape_weight", "recover_by_motion", "adapt_to_blur", "seed_stride", "gradient_threshold",
-      "anchor_threshold", "min_line_length", "max_segments", "use_depth", "sync_queue_size",
-      "init_polygon", "init_box",
-      // Read by image_transport: which transport (raw, compressed, ...) to subscribe with.
-      "image_transport"};
-  return names;
+// The value as the option table takes it; a list or a dictionary is none.
+std::optional<OptionValue> option_value(XmlRpcValue& value) {
+  switch (value.getType()) {
+    case XmlRpcValue::TypeBoolean:
+      return OptionValue(static_cast<bool>(value));
+    case XmlRpcValue::TypeInt:
+      return OptionValue(static_cast<long long>(static_cast<int>(value)));
+    case XmlRpcValue::TypeDouble:
+      return OptionValue(static_cast<double>(value));
+    case XmlRpcValue::TypeString:
+      return OptionValue(static_cast<std::string>(value));
+    default:
+      return std::nullopt;
+  }
 }
 
 }  // namespace
+
+std::vector<std::string> node_parameter_names() {
+  std::vector<std::string> names;
+  for (const OptionSpec& spec : tracker_option_table()) names.push_back(spec.name);
+  for (const char* own :
+       {"use_depth", "min_depth", "max_depth", "sync_queue_size", "init_polygon", "init_box",
+        // Read by image_transport: which transport (raw, compressed, ...).
+        "image_transport"}) {
+    names.push_back(own);
+  }
+  return names;
+}
+
+TrackerOptions tracker_options_from_parameters(
+    const ParameterLookup& lookup, const std::function<std::string(const std::string&)>& resolve) {
+  TrackerOptions options;
+  for (const OptionSpec& spec : tracker_option_table()) {
+    XmlRpcValue value;
+    if (!lookup(spec.name, &value)) continue;
+    const std::optional<OptionValue> given = option_value(value);
+    if (!given) {
+      throw std::invalid_argument("parameter " + resolve(spec.name) + ": " + spec.name +
+                                  " must be " + spec.expected() + ", got " +
+                                  type_name(value.getType()));
+    }
+    try {
+      set_tracker_option(&options, spec.name, *given);
+    } catch (const std::invalid_argument& e) {
+      throw std::invalid_argument("parameter " + resolve(spec.name) + ": " + e.what());
+    }
+  }
+  return options;
+}
 
 cv::Rect pixel_box(double x, double y, double width, double height) {
   const cv::Rect box(cvRound(x), cvRound(y), cvRound(width), cvRound(height));
@@ -161,26 +199,9 @@ void NodeOptions::check() const {
 
 NodeOptions read_node_options(const ros::NodeHandle& node) {
   NodeOptions options;
-  TrackerOptions& t = options.tracker;
-  std::string detector;
-  if (node.getParam("detector", detector)) {
-    t.detector.kind = parse_line_detector_kind(detector);
-  } else if (node.hasParam("detector")) {
-    throw std::invalid_argument("parameter " + node.resolveName("detector") +
-                                " must be a string (edlines, opencv-edlines, lsd or fld)");
-  }
-  read_double(node, "filter_distance", &t.filter_distance);
-  read_double(node, "min_area_similarity", &t.min_area_similarity);
-  read_double(node, "cost_tolerance", &t.cost_tolerance);
-  read_double(node, "similarity_exponent", &t.similarity_exponent);
-  read_double(node, "shape_weight", &t.shape_weight);
-  read_bool(node, "recover_by_motion", &t.recover_by_motion);
-  read_bool(node, "adapt_to_blur", &t.blur.adapt);
-  read_int(node, "seed_stride", &t.bdsp.seed_stride);
-  read_int(node, "gradient_threshold", &t.detector.gradient_threshold);
-  read_int(node, "anchor_threshold", &t.detector.anchor_threshold);
-  read_double(node, "min_line_length", &t.detector.min_line_length);
-  read_int(node, "max_segments", &t.max_segments);
+  options.tracker = tracker_options_from_parameters(
+      [&node](const std::string& name, XmlRpcValue* value) { return node.getParam(name, *value); },
+      [&node](const std::string& name) { return node.resolveName(name); });
   read_bool(node, "use_depth", &options.use_depth);
   read_double(node, "min_depth", &options.depth.min_depth);
   read_double(node, "max_depth", &options.depth.max_depth);
@@ -226,7 +247,7 @@ std::vector<std::string> unknown_parameters(const ros::NodeHandle& node) {
     if (name.rfind(prefix, 0) != 0) continue;
     const std::string local = name.substr(prefix.size());
     const std::string head = local.substr(0, local.find('/'));
-    const auto& known = known_parameters();
+    const std::vector<std::string> known = node_parameter_names();
     if (std::find(known.begin(), known.end(), head) == known.end()) unknown.push_back(name);
   }
   return unknown;

@@ -1,8 +1,11 @@
-// The node's settings, read from its private ROS parameters (`~filter_distance`, ...): the tracker
-// options under the CLI's names (dashes become underscores, which ROS names cannot contain) and
-// defaults, plus how the node is wired and initialised.
+// The node's settings, read from its private ROS parameters (`~filter_distance`, ...): every option
+// of the tracker's option table (scbt/tracker/option_table.h) under its name (the CLI's with
+// underscores) and default, plus how the node is wired and initialised.
 #pragma once
 
+#include <xmlrpcpp/XmlRpcValue.h>
+
+#include <functional>
 #include <opencv2/core/types.hpp>
 #include <optional>
 #include <string>
@@ -41,6 +44,16 @@ struct NodeOptions {
 // parameter for a wrong type (a string where a number belongs, ...), an unknown detector name,
 // a malformed polygon or box, or an option out of range.
 NodeOptions read_node_options(const ros::NodeHandle& private_node);
+
+// The tracker options from parameters named as the option table's options: `lookup(name, &value)`
+// fetches one (false when it is not set), `resolve(name)` gives its full name for messages. Throws
+// std::invalid_argument "parameter FULL_NAME: MESSAGE", MESSAGE the table's, for a bad value.
+using ParameterLookup = std::function<bool(const std::string& name, XmlRpc::XmlRpcValue* value)>;
+TrackerOptions tracker_options_from_parameters(
+    const ParameterLookup& lookup, const std::function<std::string(const std::string&)>& resolve);
+
+// The private parameters the node reads, without the leading '~'.
+std::vector<std::string> node_parameter_names();
 
 // Private parameters that are set but that the node does not know (likely typos).
 std::vector<std::string> unknown_parameters(const ros::NodeHandle& private_node);

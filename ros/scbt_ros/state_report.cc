@@ -1,5 +1,8 @@
 #include "scbt_ros/state_report.h"
 
+#include <diagnostic_msgs/KeyValue.h>
+
+#include <cstdio>
 #include <nlohmann/json.hpp>
 
 namespace scbt::ros_node {
@@ -63,6 +66,60 @@ std::string state_json(const FrameReport& report) {
   }
   out["timings_ms"] = timings;
   return out.dump();
+}
+
+diagnostic_msgs::DiagnosticStatus diagnostic_status(const FrameReport& report,
+                                                    const std::string& name) {
+  using diagnostic_msgs::DiagnosticStatus;
+  DiagnosticStatus status;
+  status.name = name;
+  const auto add = [&status](const std::string& key, const std::string& value) {
+    diagnostic_msgs::KeyValue pair;
+    pair.key = key;
+    pair.value = value;
+    status.values.push_back(pair);
+  };
+  const auto number = [](double value) {
+    char text[32];
+    std::snprintf(text, sizeof(text), "%.3f", value);
+    return std::string(text);
+  };
+  std::string state;
+  switch (report.event) {
+    case FrameEvent::kWaiting:
+      status.level = DiagnosticStatus::WARN;
+      status.message = "waiting for an initial boundary (~init, ~init_box)";
+      break;
+    case FrameEvent::kFailed:
+      status.level = DiagnosticStatus::ERROR;
+      status.message = "frame not tracked (see the log)";
+      break;
+    case FrameEvent::kInitialised:
+      status.level = DiagnosticStatus::OK;
+      state = to_string(TrackState::kTracking);
+      status.message = "initialised";
+      break;
+    case FrameEvent::kTracked: {
+      const TrackResult& r = *report.result;
+      state = to_string(r.state);
+      status.level = r.state == TrackState::kTracking    ? DiagnosticStatus::OK
+                     : r.state == TrackState::kUncertain ? DiagnosticStatus::WARN
+                                                         : DiagnosticStatus::ERROR;
+      status.message = state + (r.held ? " (held)" : "");
+      break;
+    }
+  }
+  add("event", to_string(report.event));
+  if (!state.empty()) add("state", state);
+  if (report.result) {
+    add("confidence", number(report.result->confidence));
+    add("held", report.result->held ? "true" : "false");
+  }
+  add("frame", std::to_string(report.frame));
+  add("dropped_frames", std::to_string(report.dropped_total));
+  add("missed_frames", std::to_string(report.missed_total));
+  add("latency_ms", number(report.latency_ms));
+  return status;
 }
 
 }  // namespace scbt::ros_node

@@ -1,6 +1,9 @@
-// The `~state` message: one JSON object per frame (std_msgs/String), so that any ROS tool or
-// language reads it without a custom message package.
+// What the node reports per frame: the `~state` message, one JSON object per frame
+// (std_msgs/String) with every statistic and timing, and the tracking state as a standard
+// diagnostic_msgs/DiagnosticStatus for /diagnostics (rqt_runtime_monitor, diagnostic_aggregator).
 #pragma once
+
+#include <diagnostic_msgs/DiagnosticStatus.h>
 
 #include <cstdint>
 #include <string>
@@ -34,5 +37,12 @@ struct FrameReport {
 // {"event": ..., "frame": ..., "state": ..., "confidence": ..., "held": ..., "timings_ms": {...},
 // "dropped_frames": ..., "missed_frames": ...} (docs/ros.md lists the fields).
 std::string state_json(const FrameReport& report);
+
+// The frame's state as a diagnostic named `name`: level OK while tracking (or just initialised),
+// WARN while uncertain or waiting for an initial boundary, ERROR when lost or when the frame was
+// not tracked; message the state, values event, state, confidence, held, frame, dropped_frames,
+// missed_frames and latency_ms.
+diagnostic_msgs::DiagnosticStatus diagnostic_status(const FrameReport& report,
+                                                    const std::string& name);
 
 }  // namespace scbt::ros_node

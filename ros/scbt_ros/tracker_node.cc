@@ -1,7 +1,9 @@
 #include "scbt_ros/tracker_node.h"
 
+#include <diagnostic_msgs/DiagnosticArray.h>
 #include <geometry_msgs/PointStamped.h>
 #include <geometry_msgs/Vector3Stamped.h>
+#include <std_msgs/Float32.h>
 #include <std_msgs/String.h>
 
 #include <exception>
@@ -20,6 +22,8 @@ TrackerNode::TrackerNode(const ros::NodeHandle& node, const ros::NodeHandle& pri
       tracker_(options.tracker) {
   boundary_publisher_ = private_node_.advertise<geometry_msgs::PolygonStamped>("boundary", 10);
   state_publisher_ = private_node_.advertise<std_msgs::String>("state", 10);
+  confidence_publisher_ = private_node_.advertise<std_msgs::Float32>("confidence", 10);
+  diagnostics_publisher_ = node_.advertise<diagnostic_msgs::DiagnosticArray>("/diagnostics", 10);
   // The callback only checks and hands over, so a short queue loses nothing: frames the tracker
   // cannot keep up with are dropped (and counted) in `frames_`, not here.
   constexpr uint32_t kQueue = 10;
@@ -218,6 +222,22 @@ void TrackerNode::publish_state(const Frame& frame, const FrameReport& partial) 
   std_msgs::String msg;
   msg.data = state_json(report);
   state_publisher_.publish(msg);
+  if (report.result) {
+    std_msgs::Float32 confidence;
+    confidence.data = static_cast<float>(report.result->confidence);
+    confidence_publisher_.publish(confidence);
+  }
+  diagnostic_msgs::DiagnosticArray diagnostics;
+  diagnostics.header.stamp = frame.image->header.stamp;
+  diagnostics.status.push_back(
+      diagnostic_status(report, ros::this_node::getName() + ": boundary tracking"));
+  const int level = diagnostics.status.back().level;
+  const ros::WallTime now = ros::WallTime::now();
+  if (level != last_diagnostic_level_ || (now - last_diagnostic_).toSec() >= 1.0) {
+    diagnostics_publisher_.publish(diagnostics);
+    last_diagnostic_ = now;
+    last_diagnostic_level_ = level;
+  }
 }
 
 }  // namespace scbt::ros_node

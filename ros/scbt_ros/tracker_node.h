@@ -33,7 +33,8 @@ namespace scbt::ros_node {
 class TrackerNode {
  public:
   // Subscribes and advertises on `node` (topics image, depth, camera_info) and `private_node`
-  // (~init, ~init_box in; ~boundary, ~state, ~centroid, ~normal out) and starts the worker.
+  // (~init, ~init_box in; ~boundary, ~state, ~confidence, ~centroid, ~normal out), publishes
+  // /diagnostics, and starts the worker.
   TrackerNode(const ros::NodeHandle& node, const ros::NodeHandle& private_node,
               const NodeOptions& options);
   ~TrackerNode();  // stops and joins the worker
@@ -89,6 +90,8 @@ class TrackerNode {
   ros::Subscriber init_box_subscriber_;
   ros::Publisher boundary_publisher_;
   ros::Publisher state_publisher_;
+  ros::Publisher confidence_publisher_;
+  ros::Publisher diagnostics_publisher_;
   ros::Publisher centroid_publisher_;
   ros::Publisher normal_publisher_;
 
@@ -104,6 +107,9 @@ class TrackerNode {
   Tracker tracker_;
   std::uint64_t frames_taken_ = 0;
   std::uint64_t dropped_reported_ = 0;
+  // /diagnostics is published when the level changes and at most once a second otherwise.
+  ros::WallTime last_diagnostic_;
+  int last_diagnostic_level_ = -1;
   std::thread worker_;
 };
 

@@ -1,6 +1,8 @@
 #include "node_under_test.h"
 
+#include <diagnostic_msgs/DiagnosticArray.h>
 #include <sensor_msgs/RegionOfInterest.h>
+#include <std_msgs/Float32.h>
 #include <std_msgs/String.h>
 
 #include <boost/make_shared.hpp>
@@ -68,6 +70,15 @@ NodeUnderTest::NodeUnderTest(const std::string& name, const std::vector<std::str
   state_ = nh.subscribe<std_msgs::String>(
       "/" + name + "/state", 200,
       [this](const std_msgs::StringConstPtr& m) { states.push(nlohmann::json::parse(m->data)); });
+  confidence_ = nh.subscribe<std_msgs::Float32>(
+      "/" + name + "/confidence", 200,
+      [this](const std_msgs::Float32ConstPtr& m) { confidences.push(m->data); });
+  diagnostics_ = nh.subscribe<diagnostic_msgs::DiagnosticArray>(
+      "/diagnostics", 200, [this, name](const diagnostic_msgs::DiagnosticArrayConstPtr& m) {
+        for (const auto& status : m->status) {
+          if (status.name.rfind("/" + name + ":", 0) == 0) diagnostics.push(status);
+        }
+      });
   std::vector<std::string> argv = {g_node_path, "__name:=" + name, "image:=/" + name + "/image"};
   argv.insert(argv.end(), extra_args.begin(), extra_args.end());
   process = ChildProcess(argv, g_log_folder + "/" + name + ".log");
@@ -77,7 +88,8 @@ NodeUnderTest::NodeUnderTest(const std::string& name, const std::vector<std::str
   const bool ok = wait_until(
       [this] {
         return image_.getNumSubscribers() > 0 && boundary_.getNumPublishers() > 0 &&
-               state_.getNumPublishers() > 0;
+               state_.getNumPublishers() > 0 && confidence_.getNumPublishers() > 0 &&
+               diagnostics_.getNumPublishers() > 0;
       },
       milliseconds(20000));
   if (ok) return ::testing::AssertionSuccess();

@@ -2,6 +2,7 @@
 // its inputs and the inboxes of its outputs. Also the rendered clips the tests play.
 #pragma once
 
+#include <diagnostic_msgs/DiagnosticStatus.h>
 #include <geometry_msgs/PolygonStamped.h>
 #include <gtest/gtest.h>
 #include <ros/ros.h>
@@ -60,6 +61,8 @@ class NodeUnderTest {
   ChildProcess process;
   Inbox<geometry_msgs::PolygonStamped> boundaries;
   Inbox<nlohmann::json> states;
+  Inbox<float> confidences;                              // ~confidence
+  Inbox<diagnostic_msgs::DiagnosticStatus> diagnostics;  // this node's, from /diagnostics
 
  private:
   std::string name_;
@@ -68,6 +71,8 @@ class NodeUnderTest {
   ros::Publisher init_box_;
   ros::Subscriber boundary_;
   ros::Subscriber state_;
+  ros::Subscriber confidence_;
+  ros::Subscriber diagnostics_;
   std::uint32_t next_seq_ = 0;
 };
 

@@ -63,7 +63,10 @@ void expect_refused(const std::string& name, const std::vector<std::string>& arg
 
 TEST(RosNode, BadParametersStopItWithAnErrorNamingThem) {
   expect_refused("scbt_bad1", {"_filter_distance:=-5"}, "filter_distance");
-  expect_refused("scbt_bad2", {"_seed_stride:=two"}, "/scbt_bad2/seed_stride must be an integer");
+  expect_refused("scbt_bad2", {"_seed_stride:=two"},
+                 "parameter /scbt_bad2/seed_stride: seed_stride must be a whole number, got 'two'");
+  expect_refused("scbt_bad6", {"_shape_weight:=101"},
+                 "parameter /scbt_bad6/shape_weight: shape_weight must be in [0, 100], got 101");
   expect_refused("scbt_bad3", {"_detector:=hough"}, "hough");
   expect_refused("scbt_bad4", {"_init_box:=[10, 10, 0, 40]"}, "positive width");
   expect_refused("scbt_bad5", {"_init_polygon:=[1, 2, 3]"}, "/scbt_bad5/init_polygon");

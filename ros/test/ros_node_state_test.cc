@@ -68,6 +68,9 @@ TEST(RosNode, StateAndConfidenceFollowTheTrackerThroughAGap) {
     EXPECT_EQ(state["event"], "tracked") << state.dump();
     EXPECT_EQ(state["state"], to_string(expected.state)) << state.dump();
     EXPECT_NEAR(state["confidence"].get<double>(), expected.confidence, 1e-9) << state.dump();
+    const auto confidence = node.confidences.pop(kReplyTimeout);
+    ASSERT_TRUE(confidence) << "no ~confidence";
+    EXPECT_EQ(*confidence, static_cast<float>(expected.confidence));
     EXPECT_EQ(state["held"], expected.held) << state.dump();
     EXPECT_EQ(state["reacquired"], expected.reacquired) << state.dump();
     EXPECT_LT(mean_boundary_distance(reply->boundary, expected.boundary, 0.5), 0.01);
@@ -83,6 +86,18 @@ TEST(RosNode, StateAndConfidenceFollowTheTrackerThroughAGap) {
     if (state["reacquired"] == true) ++reacquired;
   }
   std::cout << "[ gap      ] states: " << trace << "\n";
+  // /diagnostics: ERROR while lost, OK once tracking again (published when the level changes).
+  bool error_while_lost = false;
+  bool ok_after = false;
+  while (const auto status = node.diagnostics.pop(milliseconds(error_while_lost ? 200 : 3000))) {
+    if (status->level == diagnostic_msgs::DiagnosticStatus::ERROR &&
+        status->message.rfind("lost", 0) == 0) {
+      error_while_lost = true;
+    }
+    if (error_while_lost && status->level == diagnostic_msgs::DiagnosticStatus::OK) ok_after = true;
+  }
+  EXPECT_TRUE(error_while_lost);
+  EXPECT_TRUE(ok_after);
   EXPECT_GT(lost_while_hidden, 0) << trace;
   ASSERT_GE(first_tracking_after, 0) << trace;
   EXPECT_LT(first_tracking_after - clip.first_back, 5) << trace;

@@ -9,6 +9,7 @@
 #include "scbt/app/eval_loss.h"
 #include "scbt/eval/plot.h"
 #include "scbt/io/atomic_file.h"
+#include "scbt/tracker/option_table.h"
 
 namespace scbt {
 namespace fs = std::filesystem;
@@ -101,18 +102,10 @@ void add_notes(const EvalRunOptions& options, const EvalRunContext& run,
                const EvalRunSummary& summary, const std::vector<std::string>& failures,
                ReportInfo* info) {
   if (!run.trackers.empty()) {
-    const TrackerOptions& t = options.tracker;
-    char line[384];
-    std::snprintf(line, sizeof(line),
-                  "bdsp options: detector %s, filter distance %g px, min area similarity %g, "
-                  "cost tolerance %g, recover by motion %s, detection window %s, seed stride %d",
-                  to_string(t.detector.kind).c_str(), t.filter_distance, t.min_area_similarity,
-                  t.cost_tolerance, t.recover_by_motion ? "on" : "off",
-                  t.detector.crop_to_boundary ? "on" : "off", t.bdsp.seed_stride);
     info->notes.push_back("Trackers run: " + join(run.trackers) +
                           " (initialised from ground-truth "
                           "line 1; results in <tracker>/<Seq>.txt)");
-    info->notes.push_back(line);
+    info->notes.push_back("scbt options: " + tracker_options_repr(options.tracker));
     if (options.perturbation.kind != PerturbationKind::kNone) {
       info->notes.push_back("Frames perturbed: " + options.perturbation.name() +
                             " (eval/perturb.h; seed " + std::to_string(options.perturbation.seed) +

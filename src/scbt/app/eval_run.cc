@@ -83,12 +83,14 @@ void EvalRunOptions::check() const {
   }
   const std::vector<std::string> known = polygon_tracker_names();
   std::set<std::string> names;
+  std::set<std::string> trackers_run;
   for (const std::string& name : trackers) {
-    if (std::find(known.begin(), known.end(), name) == known.end()) {
+    const std::string canonical = canonical_polygon_tracker_name(name);
+    if (std::find(known.begin(), known.end(), canonical) == known.end()) {
       throw std::invalid_argument("unknown tracker '" + name + "' (known: " + join(known) + ")");
     }
-    if (!names.insert(name).second) {
-      throw std::invalid_argument("tracker '" + name + "' given twice");
+    if (!trackers_run.insert(canonical).second || !names.insert(name).second) {
+      throw std::invalid_argument("tracker '" + canonical + "' given twice");
     }
   }
   for (const std::string& spec : results) {

@@ -7,7 +7,6 @@ namespace scbt::cli {
 
 void add_bench_command(CLI::App& app, int* exit_code) {
   auto options = std::make_shared<BenchRunOptions>();
-  auto detector = std::make_shared<std::string>("edlines");
   auto full_frame = std::make_shared<bool>(false);
   auto no_compare = std::make_shared<bool>(false);
   CLI::App* command = app.add_subcommand(
@@ -29,9 +28,12 @@ void add_bench_command(CLI::App& app, int* exit_code) {
                    "Pixels added around the filter band of the detection window")
       ->capture_default_str();
   command->add_flag("-q,--quiet", options->quiet, "No progress bars");
-  add_tracker_options(command, &options->tracker, detector.get());
-  command->callback([options, detector, full_frame, no_compare, exit_code] {
-    options->tracker.detector.kind = parse_line_detector_kind(*detector);
+  auto flags = add_tracker_options(command);
+  command->callback([options, flags, full_frame, no_compare, exit_code] {
+    if (flags->apply(&options->tracker)) {
+      *exit_code = kExitOk;
+      return;
+    }
     options->tracker.detector.crop_to_boundary = !*full_frame;
     options->compare = !*no_compare;
     const BenchReport report = run_bench(*options, std::cerr);

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <CLI/CLI.hpp>
+#include <map>
 #include <memory>
 #include <string>
 
@@ -40,7 +41,22 @@ void add_demo_command(CLI::App& app, int* exit_code);
 void add_eval_command(CLI::App& app, int* exit_code);
 void add_bench_command(CLI::App& app, int* exit_code);
 
-// The tracker options shared by every command that tracks (--detector, --filter-distance, ...).
-void add_tracker_options(CLI::App* command, TrackerOptions* options, std::string* detector_name);
+// The tracker options shared by every command that tracks: --config FILE and one flag per option
+// of the option table (--detector, --filter-distance, ...). CLI11 fills them while parsing; apply()
+// then sets the config file's options, then the flags given, and checks the result (throws
+// std::invalid_argument with the table's message); with --print-config it prints them (YAML) and
+// returns true: the command then stops.
+struct TrackerOptionFlags {
+  struct Flag {
+    std::string text;
+    CLI::Option* option = nullptr;
+  };
+  std::string config;
+  bool print_config = false;
+  std::map<std::string, Flag> flags;  // by option name
+
+  bool apply(TrackerOptions* options) const;
+};
+std::shared_ptr<TrackerOptionFlags> add_tracker_options(CLI::App* command);
 
 }  // namespace scbt::cli

@@ -9,7 +9,6 @@ namespace scbt::cli {
 
 void add_demo_command(CLI::App& app, int* exit_code) {
   auto options = std::make_shared<DemoOptions>();
-  auto detector = std::make_shared<std::string>("edlines");
   auto shape = std::make_shared<std::string>(to_string(options->scene.shape));
   auto no_video = std::make_shared<bool>(false);
   auto depth = std::make_shared<DepthDemoOptions>();
@@ -19,7 +18,7 @@ void add_demo_command(CLI::App& app, int* exit_code) {
       "Render a synthetic clip (a textureless outline moving, rotating and scaling over clutter "
       "and noise), track it from its known first outline and report the error against the truth; "
       "with --depth an RGB-D clip of a bowl, its rim lifted to 3-D and scored");
-  command->add_option("-o,--out", options->out_dir, "Output folder (--depth: scbt-demo-depth)")
+  command->add_option("--out", options->out_dir, "Output folder (--depth: scbt-demo-depth)")
       ->capture_default_str();
   command->add_option("--frames", options->frames, "Clip length in frames (--depth: 30)")
       ->capture_default_str();
@@ -39,9 +38,17 @@ void add_demo_command(CLI::App& app, int* exit_code) {
       ->capture_default_str();
   command->add_flag("--no-video", *no_video, "Do not write the annotated demo.avi");
   command->add_flag("-q,--quiet", options->quiet, "No progress bar and no summary");
-  add_tracker_options(command, &options->tracker, detector.get());
-  command->callback([command, options, detector, shape, no_video, depth, with_depth, exit_code] {
-    options->tracker.detector.kind = parse_line_detector_kind(*detector);
+  // -o is `track`'s results file; this command writes a folder.
+  command->add_option("-o")->group("")->each([](const std::string&) {
+    throw std::invalid_argument(
+        "demo writes a folder: give it as --out DIR (-o is track's results file)");
+  });
+  auto flags = add_tracker_options(command);
+  command->callback([command, options, flags, shape, no_video, depth, with_depth, exit_code] {
+    if (flags->apply(&options->tracker)) {
+      *exit_code = kExitOk;
+      return;
+    }
     if (*with_depth) {
       for (const char* name : {"--shape", "--noise", "--clutter", "--no-video"})
         if (command->count(name) > 0)

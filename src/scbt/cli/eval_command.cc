@@ -28,7 +28,6 @@ void list_dataset(const EvalRunOptions& options) {
 
 void add_eval_command(CLI::App& app, int* exit_code) {
   auto options = std::make_shared<EvalRunOptions>();
-  auto detector = std::make_shared<std::string>("edlines");
   auto list = std::make_shared<bool>(false);
   auto no_plot = std::make_shared<bool>(false);
   auto perturb = std::make_shared<std::string>();
@@ -52,7 +51,7 @@ void add_eval_command(CLI::App& app, int* exit_code) {
   command->add_option("--results", options->results,
                       "Score existing results: NAME=DIR with DIR/<Seq>.txt (one polygon line per "
                       "frame); repeatable. Nothing is run unless --trackers is also given");
-  command->add_option("-o,--out", options->out,
+  command->add_option("--out", options->out,
                       "Output folder: <tracker>/<Seq>.txt, report.md (with the confidence's ROC "
                       "AUC per sequence), summary.csv, frames.csv, curves.csv, loss.csv, "
                       "success_curves.png");
@@ -83,9 +82,17 @@ void add_eval_command(CLI::App& app, int* exit_code) {
   command->add_flag("--no-plot", *no_plot, "Do not write success_curves.png");
   command->add_flag("-q,--quiet", options->quiet, "No progress output");
   command->add_flag("--list", *list, "List the trackers and the dataset's sequences, then exit");
-  add_tracker_options(command, &options->tracker, detector.get());
-  command->callback([options, detector, list, no_plot, perturb, perturb_seed, gaps, exit_code] {
-    options->tracker.detector.kind = parse_line_detector_kind(*detector);
+  // -o is `track`'s results file; this command writes a folder.
+  command->add_option("-o")->group("")->each([](const std::string&) {
+    throw std::invalid_argument(
+        "eval writes a folder: give it as --out DIR (-o is track's results file)");
+  });
+  auto flags = add_tracker_options(command);
+  command->callback([options, flags, list, no_plot, perturb, perturb_seed, gaps, exit_code] {
+    if (flags->apply(&options->tracker)) {
+      *exit_code = kExitOk;
+      return;
+    }
     if (*list) {
       list_dataset(*options);
       *exit_code = 0;

@@ -58,7 +58,6 @@ void add_depth_options(CLI::App* command, TrackDepthOptions* depth) {
 
 void add_track_command(CLI::App& app, int* exit_code) {
   auto options = std::make_shared<TrackRunOptions>();
-  auto detector = std::make_shared<std::string>("edlines");
   auto on_bad_frame = std::make_shared<std::string>("hold");
   CLI::App* command = app.add_subcommand(
       "track", "Track a closed boundary through a video, an image folder or a camera");
@@ -96,15 +95,13 @@ void add_track_command(CLI::App& app, int* exit_code) {
       ->check(CLI::IsMember({"hold", "stop"}));
   command->add_flag("-q,--quiet", options->quiet, "No progress bar and no summary");
   add_depth_options(command, &options->depth);
-  add_tracker_options(command, &options->tracker, detector.get());
+  auto flags = add_tracker_options(command);
   auto live = add_live_options(command);
-  command
-      ->add_option("--max-segments", options->tracker.max_segments,
-                   "Bound on the work per frame: keep at most this many (the longest) segments "
-                   "near the boundary; the CSV note says when it capped")
-      ->capture_default_str();
-  command->callback([options, detector, live, on_bad_frame, exit_code] {
-    options->tracker.detector.kind = parse_line_detector_kind(*detector);
+  command->callback([options, flags, live, on_bad_frame, exit_code] {
+    if (flags->apply(&options->tracker)) {
+      *exit_code = kExitOk;
+      return;
+    }
     if (run_live_if_requested(*live, *options, exit_code)) return;
     options->on_bad_frame = parse_bad_frame_policy(*on_bad_frame);
     const TrackSummary summary = run_track(*options, std::cerr);

@@ -34,12 +34,17 @@ class StaticTracker : public PolygonTracker {
 }  // namespace
 
 std::vector<std::string> polygon_tracker_names() {
-  return {"bdsp", "ecc", "klt", "csrt", "rrc", "static"};
+  return {"scbt", "ecc", "klt", "csrt", "rrc", "static"};
+}
+
+std::string canonical_polygon_tracker_name(const std::string& name) {
+  return name == "bdsp" ? "scbt" : name;
 }
 
 std::unique_ptr<PolygonTracker> make_polygon_tracker(const std::string& name,
                                                      const TrackerOptions& options) {
-  if (name == "bdsp") return std::make_unique<BdspPolygonTracker>(Tracker(options));
+  if (canonical_polygon_tracker_name(name) == "scbt")
+    return std::make_unique<BdspPolygonTracker>(Tracker(options));
   if (name == "ecc") return std::make_unique<EccTracker>();
   if (name == "klt") return std::make_unique<KltTracker>();
   if (name == "csrt") return std::make_unique<CsrtTracker>();

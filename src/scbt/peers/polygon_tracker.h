@@ -38,8 +38,11 @@ class BdspPolygonTracker : public PolygonTracker {
 
 // Names accepted by make_polygon_tracker, in a stable order.
 std::vector<std::string> polygon_tracker_names();
+// The name among polygon_tracker_names() that `name` stands for: "scbt" for its alias "bdsp",
+// `name` itself otherwise.
+std::string canonical_polygon_tracker_name(const std::string& name);
 
-// "bdsp" (scbt, configured by `options`), the peers "ecc", "klt", "csrt" (ecc_tracker.h,
+// "scbt" (alias "bdsp"; configured by `options`), the peers "ecc", "klt", "csrt" (ecc_tracker.h,
 // klt_tracker.h, csrt_tracker.h, default settings) and "rrc" (rrc_tracker.h, using the detector
 // and filter distance of `options`), and "static" (the initial polygon held).
 // Throws std::invalid_argument for an unknown name.

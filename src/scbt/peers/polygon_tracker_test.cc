@@ -12,7 +12,7 @@ namespace {
 
 TEST(PolygonTracker, FactoryBuildsEveryListedTracker) {
   const std::vector<std::string> names = polygon_tracker_names();
-  for (const char* expected : {"bdsp", "ecc", "klt", "csrt", "rrc", "static"}) {
+  for (const char* expected : {"scbt", "ecc", "klt", "csrt", "rrc", "static"}) {
     EXPECT_NE(std::find(names.begin(), names.end(), expected), names.end()) << expected;
   }
   const testing::MovingPatch scene = testing::render_moving_patch(2, {2.0, 1.0}, 0.0, 9);
@@ -25,6 +25,18 @@ TEST(PolygonTracker, FactoryBuildsEveryListedTracker) {
     EXPECT_GE(result.boundary.size(), 3u) << name;
   }
   EXPECT_THROW(make_polygon_tracker("esm"), std::invalid_argument);
+}
+
+// "bdsp", scbt's earlier name in `scbt eval`, still names it.
+TEST(PolygonTracker, BdspIsAnAliasOfScbt) {
+  EXPECT_EQ(canonical_polygon_tracker_name("bdsp"), "scbt");
+  EXPECT_EQ(canonical_polygon_tracker_name("klt"), "klt");
+  const std::vector<std::string> names = polygon_tracker_names();
+  EXPECT_EQ(std::find(names.begin(), names.end(), "bdsp"), names.end());
+  const testing::MovingPatch scene = testing::render_moving_patch(2, {2.0, 1.0}, 0.0, 9);
+  std::unique_ptr<PolygonTracker> tracker = make_polygon_tracker("bdsp");
+  tracker->init(scene.frames[0], scene.truth[0]);
+  EXPECT_GE(tracker->track(scene.frames[1]).boundary.size(), 3u);
 }
 
 // The floor: the initial polygon, held, whatever the frames show. On a moving scene it is far

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "scbt/tracker/hexagon_scene_test_util.h"
+#include "scbt/tracker/option_table.h"
 #include "scbt/tracker/tracker.h"
 
 namespace scbt {
@@ -26,7 +27,7 @@ enum class Prediction { kNone, kExtrapolated, kMeasured };
 TrackerOptions options_for(Prediction prediction) {
   TrackerOptions options;
   options.recover_by_motion = false;
-  options.predict_motion = prediction != Prediction::kNone;
+  set_tracker_option(&options, "predict_motion", prediction != Prediction::kNone);
   options.measure_motion = prediction == Prediction::kMeasured;
   return options;
 }

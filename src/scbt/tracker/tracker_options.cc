@@ -3,31 +3,24 @@
 #include <cmath>
 #include <stdexcept>
 #include <string>
+#include <utility>
+
+#include "scbt/tracker/option_table.h"
 
 namespace scbt {
 
 void TrackerOptions::check() const {
+  // The user options first, so that every interface reports them in the table's words.
+  check_user_options(*this);
   detector.check();
   adaptive_thresholds.check();
   exposure.check();
   loss.check();
   appearance.check();
   blur.check();
-  if (!(filter_distance > 0.0 && filter_distance <= 1000.0)) {
-    throw std::invalid_argument("filter_distance must be in (0, 1000] pixels, got " +
-                                std::to_string(filter_distance));
-  }
-  if (!(min_area_similarity >= 0.0 && min_area_similarity < 1.0)) {
-    throw std::invalid_argument("min_area_similarity must be in [0, 1), got " +
-                                std::to_string(min_area_similarity));
-  }
   if (!(similarity_exponent >= 0.0 && similarity_exponent <= 10.0)) {
     throw std::invalid_argument("similarity_exponent must be in [0, 10], got " +
                                 std::to_string(similarity_exponent));
-  }
-  if (!(shape_weight >= 0.0 && shape_weight <= 100.0)) {
-    throw std::invalid_argument("shape_weight must be in [0, 100], got " +
-                                std::to_string(shape_weight));
   }
   if (!(cost_tolerance >= 0.0 && cost_tolerance <= 10.0)) {
     throw std::invalid_argument("cost_tolerance must be in [0, 10], got " +
@@ -41,13 +34,31 @@ void TrackerOptions::check() const {
     throw std::invalid_argument("min_predicted_move must be in [0, 100] (x filter_distance), got " +
                                 std::to_string(min_predicted_move));
   }
-  if (max_segments < 3 || max_segments > 100000) {
-    throw std::invalid_argument("max_segments must be in 3..100000, got " +
-                                std::to_string(max_segments));
+  // Switches that act only through another: set on their own they would do nothing.
+  if (!predict_motion) {
+    const std::pair<bool, const char*> needs_prediction[] = {
+        {measure_motion, "measure_motion"},
+        {confirm_motion, "confirm_motion"},
+        {fall_back_unmoved, "fall_back_unmoved"},
+        {gate_sustained_shrink, "gate_sustained_shrink"}};
+    for (const auto& [on, name] : needs_prediction) {
+      if (on) {
+        throw std::invalid_argument(std::string(name) +
+                                    " acts only with predict_motion: turn it off too");
+      }
+    }
   }
-  if (bdsp.seed_stride < 1 || bdsp.seed_stride > 1000) {
-    throw std::invalid_argument("seed_stride must be in 1..1000, got " +
-                                std::to_string(bdsp.seed_stride));
+  if (adaptive_thresholds.enabled) {
+    if (smooth_noisy_frames) {
+      throw std::invalid_argument(
+          "smooth_noisy_frames acts only with adaptive thresholds off (the adapted ones smooth "
+          "every frame): turn it off too");
+    }
+    if (adaptive_thresholds.retry_weak_frames) {
+      throw std::invalid_argument(
+          "retry_weak_frames acts only with adaptive thresholds off (every frame is adapted): "
+          "turn it off too");
+    }
   }
 }
 

@@ -1,4 +1,6 @@
-// Options of the boundary tracker. Defaults are the paper's values.
+// Options of the boundary tracker. Defaults are the paper's values. The ones a user tunes are
+// listed, with their ranges, in option_table.h (the CLI, Python, ROS and config files set them by
+// name); the rest are fitted constants and internal switches.
 #pragma once
 
 #include "scbt/cycles/bdsp.h"
@@ -98,7 +100,11 @@ struct TrackerOptions {
   // reported `uncertain`.
   double min_visible = 0.6;
 
-  // Throws std::invalid_argument naming the first bad value.
+  // Throws std::invalid_argument naming the first bad value, or a switch that would do nothing:
+  // measure_motion, confirm_motion, fall_back_unmoved and gate_sustained_shrink act only with
+  // predict_motion (setting "predict_motion" through the option table sets them with it), and
+  // smooth_noisy_frames and adaptive_thresholds.retry_weak_frames only with
+  // adaptive_thresholds.enabled off.
   void check() const;
 };
 

@@ -10,6 +10,7 @@
 
 #include "scbt/synthetic/scene.h"
 #include "scbt/tracker/dim_camera_test_util.h"
+#include "scbt/tracker/option_table.h"
 #include "scbt/tracker/tracker.h"
 
 namespace scbt {
@@ -37,7 +38,7 @@ ClipRun track_clip(double brightness, double noise, bool retry_weak_frames, std:
   // Without that scaling, searching where the rim moved adapts the thresholds to the rim itself
   // (about 12, against 4 beside it), too high for its faint step at 8 % of the light (seed 1).
   options.exposure.normalize = false;
-  options.predict_motion = false;
+  set_tracker_option(&options, "predict_motion", false);
   // ... and smoothing every noisy frame would find the noisy rim without the retry.
   options.smooth_noisy_frames = false;
   Tracker tracker(options);
@@ -148,6 +149,9 @@ TEST(TrackerWeakFramesTest, AFaintCycleOfAnotherShapeIsNotTakenByTheRetry) {
   TrackerOptions every_frame;
   every_frame.exposure.normalize = false;
   every_frame.adaptive_thresholds.enabled = true;
+  // What acts only with the adaptive thresholds off.
+  every_frame.smooth_noisy_frames = false;
+  every_frame.adaptive_thresholds.retry_weak_frames = false;
   EXPECT_GT(tracked_after_the_square(every_frame), 0);
   TrackerOptions weak_frames;
   weak_frames.exposure.normalize = false;
