@@ -14,6 +14,28 @@ namespace {
 
 using XmlRpc::XmlRpcValue;
 
+// The parameters the node reads, without the leading '~'.
+const std::vector<std::string>& known_parameters() {
+  static const std::vector<std::string> names = {
+      "detector", "filter_distance", "min_area_similarity", "cost_tolerance", "similarity_exponent",
+      "shape_weight", "recover_by_motion", "adapt_to_blur", "seed_stride", "gradient_threshold",
+      "anchor_threshold", "min_line_length", "max_segments", "use_depth", "min_depth", "max_depth",
+      "sync_queue_size", "init_polygon", "init_box",
+      // Read by image_transport: which transport (raw, compressed, ...) to subscribe with.
+      "image_transport"};
+  return names;
+}
+
+// Every read goes through this: a parameter read but missing from known_parameters() would be
+// warned about as unknown though it is used.
+const std::string& known(const std::string& name) {
+  const auto& names = known_parameters();
+  if (std::find(names.begin(), names.end(), name) == names.end()) {
+    throw std::logic_error("parameter ~" + name + " is read but not listed as known");
+  }
+  return name;
+}
+
 const char* type_name(XmlRpcValue::Type type) {
   switch (type) {
     case XmlRpcValue::TypeBoolean:
@@ -54,7 +76,7 @@ bool to_double(XmlRpcValue& value, double* out) {
 
 void read_double(const ros::NodeHandle& node, const std::string& name, double* out) {
   XmlRpcValue value;
-  if (!node.getParam(name, value)) return;
+  if (!node.getParam(known(name), value)) return;
   if (!to_double(value, out)) throw wrong_type(node, name, "a number", value.getType());
   if (!std::isfinite(*out)) {
     throw std::invalid_argument("parameter " + node.resolveName(name) + " must be finite");
@@ -63,7 +85,7 @@ void read_double(const ros::NodeHandle& node, const std::string& name, double* o
 
 void read_int(const ros::NodeHandle& node, const std::string& name, int* out) {
   XmlRpcValue value;
-  if (!node.getParam(name, value)) return;
+  if (!node.getParam(known(name), value)) return;
   if (value.getType() != XmlRpcValue::TypeInt) {
     throw wrong_type(node, name, "an integer", value.getType());
   }
@@ -72,7 +94,7 @@ void read_int(const ros::NodeHandle& node, const std::string& name, int* out) {
 
 void read_bool(const ros::NodeHandle& node, const std::string& name, bool* out) {
   XmlRpcValue value;
-  if (!node.getParam(name, value)) return;
+  if (!node.getParam(known(name), value)) return;
   if (value.getType() != XmlRpcValue::TypeBoolean) {
     throw wrong_type(node, name, "true or false", value.getType());
   }
@@ -109,7 +131,7 @@ std::vector<double> parse_numbers(const std::string& name, std::string text) {
 std::optional<std::vector<double>> read_numbers(const ros::NodeHandle& node,
                                                 const std::string& name) {
   XmlRpcValue value;
-  if (!node.getParam(name, value)) return std::nullopt;
+  if (!node.getParam(known(name), value)) return std::nullopt;
   // roscpp keeps a command-line `_init_box:=[1, 2, 3, 4]` as a string: parse it as the list.
   if (value.getType() == XmlRpcValue::TypeString) {
     return parse_numbers(node.resolveName(name), static_cast<std::string>(value));
@@ -126,18 +148,6 @@ std::optional<std::vector<double>> read_numbers(const ros::NodeHandle& node,
     }
   }
   return numbers;
-}
-
-// The parameters the node reads, without the leading '~'.
-const std::vector<std::string>& known_parameters() {
-  static const std::vector<std::string> names = {
-      "detector", "filter_distance", "min_area_similarity", "cost_tolerance", "similarity_exponent",
-      "shape_weight", "recover_by_motion", "adapt_to_blur", "seed_stride", "gradient_threshold",
-      "anchor_threshold", "min_line_length", "max_segments", "use_depth", "sync_queue_size",
-      "init_polygon", "init_box",
-      // Read by image_transport: which transport (raw, compressed, ...) to subscribe with.
-      "image_transport"};
-  return names;
 }
 
 }  // namespace
@@ -163,7 +173,7 @@ NodeOptions read_node_options(const ros::NodeHandle& node) {
   NodeOptions options;
   TrackerOptions& t = options.tracker;
   std::string detector;
-  if (node.getParam("detector", detector)) {
+  if (node.getParam(known("detector"), detector)) {
     t.detector.kind = parse_line_detector_kind(detector);
   } else if (node.hasParam("detector")) {
     throw std::invalid_argument("parameter " + node.resolveName("detector") +

@@ -134,6 +134,16 @@ TEST(StateReport, TrackedFrameCarriesStateConfidenceHeldTimingsAndDrops) {
   const auto initialised = nlohmann::json::parse(state_json(FrameReport{FrameEvent::kInitialised}));
   EXPECT_EQ(initialised["state"], "tracking");
   EXPECT_TRUE(initialised["confidence"].is_null());
+  EXPECT_FALSE(initialised.contains("reason"));
+}
+
+TEST(StateReport, FailedFrameSaysWhy) {
+  FrameReport report{FrameEvent::kFailed};
+  report.reason = "frame size changed from 640x480 to 320x240";
+  const auto json = nlohmann::json::parse(state_json(report));
+  EXPECT_EQ(json["event"], "failed");
+  EXPECT_EQ(json["reason"], "frame size changed from 640x480 to 320x240");
+  EXPECT_FALSE(json.contains("state"));
 }
 
 }  // namespace
