@@ -30,9 +30,10 @@ def call(tracker, name, image, step):
         tracker.track(image)
 
 
+CALLS = ["init", "init_from_box", "track"]
 ORDERS = [
     list(zip(names, colours))
-    for names in itertools.product(["init", "init_from_box"], *[["init", "init_from_box", "track"]] * 2)
+    for names in itertools.product(CALLS[:2], CALLS, CALLS)  # an init first
     for colours in itertools.product(["grey", "bgr"], repeat=3)
 ]
 
