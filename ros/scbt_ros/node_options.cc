@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <sstream>
 #include <stdexcept>
 
@@ -153,6 +154,16 @@ std::optional<std::vector<double>> read_numbers(const ros::NodeHandle& node,
 }  // namespace
 
 cv::Rect pixel_box(double x, double y, double width, double height) {
+  for (const double value : {x, y, width, height}) {
+    // Rounded into an int below: a value beyond one would wrap or saturate into another box.
+    if (!(std::abs(value) <= std::numeric_limits<int>::max())) {
+      std::ostringstream text;
+      text.precision(15);
+      text << value;
+      throw std::invalid_argument("a box value (" + text.str() + ") is out of range (at most " +
+                                  std::to_string(std::numeric_limits<int>::max()) + " pixels)");
+    }
+  }
   const cv::Rect box(cvRound(x), cvRound(y), cvRound(width), cvRound(height));
   if (box.width <= 0 || box.height <= 0) {
     throw std::invalid_argument("a box needs a positive width and height");

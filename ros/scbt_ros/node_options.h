@@ -46,7 +46,7 @@ NodeOptions read_node_options(const ros::NodeHandle& private_node);
 std::vector<std::string> unknown_parameters(const ros::NodeHandle& private_node);
 
 // The box (x, y, width, height) in whole pixels (rounded). Throws std::invalid_argument for a
-// negative corner or a non-positive width or height.
+// value beyond an int (naming it), a negative corner or a non-positive width or height.
 cv::Rect pixel_box(double x, double y, double width, double height);
 
 }  // namespace scbt::ros_node

@@ -44,6 +44,17 @@ TEST(Conversions, RegionBecomesABox) {
   EXPECT_EQ(from_roi_msg(roi), cv::Rect(10, 20, 30, 40));
   roi.width = 0;
   EXPECT_THROW(from_roi_msg(roi), std::invalid_argument);
+  // uint32 offsets beyond an int are refused by value, not wrapped or saturated.
+  roi.width = 30;
+  roi.x_offset = 4294967295u;
+  try {
+    from_roi_msg(roi);
+    ADD_FAILURE() << "a box at x 4294967295 accepted";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("4294967295) is out of range"), std::string::npos)
+        << e.what();
+  }
+  EXPECT_THROW(pixel_box(0, 0, 1e30, 10), std::invalid_argument);
 }
 
 TEST(Conversions, RgbIsSwappedToBgrAndMonoIsShared) {
