@@ -43,10 +43,24 @@ write_basic_package_version_file(${PROJECT_BINARY_DIR}/scbtConfigVersion.cmake
 install(FILES ${PROJECT_BINARY_DIR}/scbtConfig.cmake ${PROJECT_BINARY_DIR}/scbtConfigVersion.cmake
         DESTINATION ${SCBT_CMAKE_DIR} COMPONENT scbt)
 
+# scbt.pc, in two forms: with the libdir as the linked program's run-time search path
+# (-Wl,-rpath), so that a pkg-config consumer runs from any prefix without LD_LIBRARY_PATH; and
+# without it, for a prefix the loader searches anyway (/usr, and the Debian package, which
+# installs with SCBT_SYSTEM_PREFIX set: scbt_package.cmake). Chosen when installing.
 file(RELATIVE_PATH SCBT_PC_TO_PREFIX /prefix/${CMAKE_INSTALL_LIBDIR}/pkgconfig /prefix)
+set(SCBT_PC_RUNPATH " -Wl,-rpath,\${libdir}")
 configure_file(${PROJECT_SOURCE_DIR}/cmake/scbt.pc.in ${PROJECT_BINARY_DIR}/scbt.pc @ONLY)
-install(FILES ${PROJECT_BINARY_DIR}/scbt.pc DESTINATION ${CMAKE_INSTALL_LIBDIR}/pkgconfig
-        COMPONENT scbt)
+set(SCBT_PC_RUNPATH "")
+configure_file(${PROJECT_SOURCE_DIR}/cmake/scbt.pc.in ${PROJECT_BINARY_DIR}/system/scbt.pc @ONLY)
+install(
+  CODE "
+    if(SCBT_SYSTEM_PREFIX OR CMAKE_INSTALL_PREFIX STREQUAL \"/usr\")
+      set(scbt_pc \"${PROJECT_BINARY_DIR}/system/scbt.pc\")
+    else()
+      set(scbt_pc \"${PROJECT_BINARY_DIR}/scbt.pc\")
+    endif()
+    file(INSTALL \"\${scbt_pc}\" DESTINATION \"\${CMAKE_INSTALL_PREFIX}/${CMAKE_INSTALL_LIBDIR}/pkgconfig\")"
+  COMPONENT scbt)
 
 # Where Debian's /usr/bin/python3 looks (P/lib/python3/dist-packages), with its type stub.
 if(TARGET scbt_python)

@@ -32,10 +32,21 @@ set(CPACK_DEBIAN_ROS_PACKAGE_NAME scbt-ros)
 set(CPACK_COMPONENT_ROS_DESCRIPTION "scbt_node: the scbt tracker as a ROS 1 node (package scbt_ros)")
 set(CPACK_DEBIAN_ROS_PACKAGE_DEPENDS "scbt (= ${PROJECT_VERSION})")
 # scbt_node needs libscbt.so from the scbt package (the Depends above): dpkg-shlibdeps finds it
-# where CPack staged that package.
-set(CPACK_DEBIAN_PACKAGE_SHLIBDEPS_PRIVATE_DIRS
-    ${PROJECT_BINARY_DIR}/_CPack_Packages/Linux/DEB/scbt-${PROJECT_VERSION}-Linux/scbt/usr/lib)
+# where CPack staged that package, under the packaging folder -- the build folder, or the one
+# `cpack -B DIR` names, known only when cpack runs: so set there (CPACK_PROJECT_CONFIG_FILE).
+file(
+  CONFIGURE
+  OUTPUT ${PROJECT_BINARY_DIR}/scbt_cpack_options.cmake
+  CONTENT
+    [[set(CPACK_DEBIAN_PACKAGE_SHLIBDEPS_PRIVATE_DIRS
+    "${CPACK_PACKAGE_DIRECTORY}/_CPack_Packages/${CPACK_SYSTEM_NAME}/${CPACK_GENERATOR}/${CPACK_PACKAGE_FILE_NAME}/scbt${CPACK_PACKAGING_INSTALL_PREFIX}/@CMAKE_INSTALL_LIBDIR@")
+]]
+  @ONLY)
+set(CPACK_PROJECT_CONFIG_FILE ${PROJECT_BINARY_DIR}/scbt_cpack_options.cmake)
 set(CPACK_COMPONENT_ROS_DEPENDS scbt)
+# Installed under /usr, where the loader looks: scbt.pc without a run-time search path
+# (scbt_install.cmake).
+set(CPACK_CUSTOM_INSTALL_VARIABLES SCBT_SYSTEM_PREFIX=ON)
 
 get_cmake_property(SCBT_INSTALL_COMPONENTS COMPONENTS)
 set(CPACK_COMPONENTS_ALL scbt)

@@ -8,6 +8,7 @@
 #include <cstdio>
 #include <cstring>
 #include <memory>
+#include <limits>
 #include <mutex>
 #include <opencv2/core/mat.hpp>
 #include <stdexcept>
@@ -26,22 +27,44 @@ namespace py = pybind11;
 namespace scbt {
 namespace {
 
-// (x, y, w, h) of numbers; ValueError for another length or a non-finite value.
+// (x, y, w, h) of numbers, rounded to whole pixels. TypeError for anything else; ValueError for
+// another length, or naming the value as it was given when it is not finite or no pixel
+// coordinate (outside the range of a C int).
 cv::Rect box_from_object(const py::object& object) {
-  std::vector<double> values;
+  static const char* const kNames[] = {"x", "y", "w", "h"};
+  std::vector<py::object> items;
   try {
-    values = object.cast<std::vector<double>>();
+    items = object.cast<std::vector<py::object>>();
   } catch (const py::cast_error&) {
     throw py::type_error("box must be a sequence of 4 numbers (x, y, w, h)");
   }
-  if (values.size() != 4) {
+  if (items.size() != 4) {
     throw py::value_error("box must have 4 values (x, y, w, h), got " +
-                          std::to_string(values.size()));
+                          std::to_string(items.size()));
   }
-  check_finite_row(values.data(), 4, 0, "box");
-  return cv::Rect(
-      static_cast<int>(std::lround(values[0])), static_cast<int>(std::lround(values[1])),
-      static_cast<int>(std::lround(values[2])), static_cast<int>(std::lround(values[3])));
+  int values[4];
+  for (int i = 0; i < 4; ++i) {
+    const std::string given = py::str(items[i]).cast<std::string>();
+    const std::string what = std::string("box ") + kNames[i] + "=" + given;
+    // An int too large for a double is out of range too.
+    double pixels = std::numeric_limits<double>::max();
+    try {
+      const double value = items[i].cast<double>();
+      if (!std::isfinite(value)) throw py::value_error(what + " is not finite");
+      pixels = std::round(value);
+    } catch (const py::cast_error&) {
+      if (!py::isinstance<py::int_>(items[i])) {
+        throw py::type_error("box must be a sequence of 4 numbers (x, y, w, h), got " + what);
+      }
+    }
+    if (!(pixels >= std::numeric_limits<int>::min() && pixels <= std::numeric_limits<int>::max())) {
+      throw py::value_error(what + " is out of range (pixels from " +
+                            std::to_string(std::numeric_limits<int>::min()) + " to " +
+                            std::to_string(std::numeric_limits<int>::max()) + ")");
+    }
+    values[i] = static_cast<int>(pixels);
+  }
+  return cv::Rect(values[0], values[1], values[2], values[3]);
 }
 
 // The Python-facing tracker: the C++ Tracker plus a lock, since track() runs without the GIL

@@ -1,9 +1,11 @@
 #!/usr/bin/env bash
 # CI: what a user of the installed scbt gets (docs/install.md). Reuses the Release build/ that
 # the README's test command made: installs it into a temporary prefix, checks the public headers
-# stand alone there, builds and runs examples/cpp (CMake package and pkg-config) and
-# examples/python against it on a rendered clip, then builds the Debian packages and checks
-# their file lists and metadata. Any failure fails the run.
+# stand alone there, builds and runs examples/cpp (CMake package and pkg-config, the latter with
+# no LD_LIBRARY_PATH) and examples/python against it on a rendered JPEG clip and on a dataset
+# sequence, then builds the Debian packages into another folder (cpack -B) and checks their file
+# lists and metadata. Any failure fails the run. The dataset (SCBT_DATASET, default
+# ../shared/scbt-dataset) must be there when CI is set; elsewhere its run is skipped, saying so.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 build=${SCBT_BUILD:-build}
@@ -38,7 +40,7 @@ cflags=$(pkg-config --cflags scbt)
   xargs -P 2 -I{} sh -c "echo '#include <{}>' | c++ -std=c++17 -fsyntax-only -Wall -Wextra -Werror -x c++ $cflags -"
 echo "ci_install: every installed header compiles on its own"
 
-"$python" scripts/render_frames.py "$work/clip" --frames 30
+"$python" scripts/render_frames.py "$work/clip" --frames 30 --formats jpg
 
 # examples/cpp through find_package(scbt), and the same source through pkg-config.
 cmake -S examples/cpp -B "$work/example-cpp" -DCMAKE_PREFIX_PATH="$prefix" -DCMAKE_BUILD_TYPE=Release >/dev/null
@@ -47,20 +49,51 @@ cmake --build "$work/example-cpp" >/dev/null
 tail -n 1 "$work/cpp.log"
 "$python" scripts/check_boundaries.py "$work/cpp.txt" "$work/clip/truth.txt"
 c++ -std=c++17 -O1 examples/cpp/track_folder.cc -o "$work/track_folder_pc" $(pkg-config --cflags --libs scbt opencv4)
-LD_LIBRARY_PATH=$prefix/lib "$work/track_folder_pc" "$work/clip" "$work/clip/init.txt" >"$work/pc.txt" 2>/dev/null
+# As a user runs it: no LD_LIBRARY_PATH (scbt.pc gives the program the prefix's libdir to search).
+env -u LD_LIBRARY_PATH "$work/track_folder_pc" "$work/clip" "$work/clip/init.txt" >"$work/pc.txt" 2>/dev/null
 cmp "$work/cpp.txt" "$work/pc.txt"
-echo "ci_install: examples/cpp built with pkg-config prints the same boundaries"
+echo "ci_install: examples/cpp built with pkg-config runs as it is and prints the same boundaries"
 
 PYTHONPATH=$prefix/lib/python3/dist-packages "$python" examples/python/track_folder.py \
   "$work/clip" "$work/clip/init.txt" >"$work/python.txt" 2>"$work/python.log"
 tail -n 1 "$work/python.log"
 "$python" scripts/check_boundaries.py "$work/python.txt" "$work/clip/truth.txt"
 
-# The Debian packages: file lists and metadata.
-rm -f "$build"/scbt*_amd64.deb
-(cd "$build" && cpack -G DEB >/dev/null)
-deb=$build/scbt_${version}_amd64.deb
-[ -f "$deb" ] || { echo "ci_install: $deb not made" >&2; ls "$build"/*.deb >&2; exit 1; }
+# Both examples on the first 60 frames of a dataset sequence (JPEG, as published): the same
+# boundaries as `scbt track` gives there.
+dataset=${SCBT_DATASET:-../shared/scbt-dataset}
+sequence=BookStand
+if [ -d "$dataset/OriginalVideosAVI/$sequence" ]; then
+  mkdir "$work/$sequence"
+  frames=("$(cd "$dataset/OriginalVideosAVI/$sequence" && pwd)"/*.jpg)  # 0001.jpg ... in order
+  ln -s "${frames[@]:0:60}" "$work/$sequence/"
+  head -n 1 "$dataset/GroundTruthByPolygons/${sequence}_TrackingGroundTruth.txt" >"$work/$sequence.init"
+  "$prefix/bin/scbt" track "$work/$sequence" --init "$work/$sequence.init" -o "$work/$sequence.cli" -q
+  "$work/example-cpp/track_folder" "$work/$sequence" "$work/$sequence.init" >"$work/$sequence.cpp" 2>/dev/null
+  PYTHONPATH=$prefix/lib/python3/dist-packages "$python" examples/python/track_folder.py \
+    "$work/$sequence" "$work/$sequence.init" >"$work/$sequence.py" 2>/dev/null
+  "$python" - "$work/$sequence".{cli,cpp,py} <<'EOF'
+import sys
+import numpy as np
+cli, cpp, py = ([np.array(line.split()[1:], float) for line in open(p)] for p in sys.argv[1:])
+assert len(cli) == len(cpp) == len(py) == 60, (len(cli), len(cpp), len(py))
+worst = max(np.abs(a - b).max() if a.shape == b.shape else np.inf
+            for a, b in [*zip(cli, cpp), *zip(cli, py)])
+assert worst <= 0.01, f"the examples' boundaries differ from scbt track's by up to {worst} px"
+EOF
+  echo "ci_install: examples/cpp and examples/python on $sequence (60 JPEG frames): scbt track's boundaries"
+elif [ -n "${CI:-}" ]; then
+  echo "ci_install: no dataset at $dataset (set SCBT_DATASET): CI runs the examples on it" >&2
+  exit 1
+else
+  echo "ci_install: no dataset at $dataset (set SCBT_DATASET): examples not run on a dataset sequence"
+fi
+
+# The Debian packages, into a folder of their own (cpack -B): file lists and metadata.
+packages=$work/packages
+(cd "$build" && cpack -G DEB -B "$packages" >/dev/null)
+deb=$packages/scbt_${version}_amd64.deb
+[ -f "$deb" ] || { echo "ci_install: $deb not made" >&2; ls "$packages" >&2; exit 1; }
 dpkg-deb -I "$deb" | sed 's/^/  /'
 dpkg-deb -c "$deb" | awk '{print $6}' >"$work/files"
 for f in ./usr/bin/scbt "./usr/lib/libscbt.so.$version" ./usr/lib/libscbt.so \
@@ -78,12 +111,17 @@ if grep -E 'include/scbt/(io|app|eval|render|synthetic|reference|peers)/|edlines
   exit 1
 fi
 [ "$(dpkg-deb -f "$deb" Version)" = "$version" ] || { echo "ci_install: wrong Version" >&2; exit 1; }
+# Under /usr the loader finds libscbt.so: the package's scbt.pc adds no run-time search path.
+if dpkg-deb --fsys-tarfile "$deb" | tar -xO ./usr/lib/pkgconfig/scbt.pc | grep -n rpath; then
+  echo "ci_install: $deb's scbt.pc sets an rpath (above)" >&2
+  exit 1
+fi
 depends=$(dpkg-deb -f "$deb" Depends)
 for lib in libc6 libopencv-core libgmp python3; do
   [[ "$depends" == *"$lib"* ]] || { echo "ci_install: Depends lacks $lib: $depends" >&2; exit 1; }
 done
 echo "ci_install: $deb: $(wc -l <"$work/files") entries, Depends computed"
-ros_deb=$build/scbt-ros_${version}_amd64.deb
+ros_deb=$packages/scbt-ros_${version}_amd64.deb
 if [ -f "$ros_deb" ]; then
   dpkg-deb -c "$ros_deb" | awk '{print $6}' >"$work/ros-files"
   for f in ./usr/lib/scbt_ros/scbt_node ./usr/share/scbt_ros/package.xml ./usr/share/scbt_ros/launch/scbt.launch; do

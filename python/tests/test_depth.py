@@ -63,6 +63,21 @@ def test_projection_round_trip_and_no_depth_is_invalid():
     assert not rim.valid and rim.n_valid == 0
 
 
+def test_samples_are_bounded_by_the_image_not_the_boundarys_extent():
+    depth, outline, _, _ = disk_scene([0, 0, 0.8], [0, -0.5, -1], 0.08)
+    middle = np.array([CX, CY])
+    # Grown 1000 times about the image centre: 72 vertices, none near the image, and no point
+    # along edges some 4e5 px long (they took memory in proportion: 1e5 times took gigabytes).
+    far = middle + (outline - middle) * 1e3
+    rim = scbt.lift_boundary_to_3d(far, depth, (FX, FY, CX, CY))
+    assert rim.n_samples == len(outline) and not rim.valid
+    # Half of it in the image: the points along its edges stop near the image's border.
+    shifted = outline + [300, 0]
+    rim = scbt.lift_boundary_to_3d(shifted, depth, (FX, FY, CX, CY))
+    beyond = rim.samples[:, 0] > 640 + 10
+    assert 0 < beyond.sum() <= (shifted[:, 0] > 640 + 10).sum()
+
+
 def test_clear_errors_for_bad_input():
     depth, outline, _, _ = disk_scene([0, 0, 0.8], [0, -0.5, -1], 0.08)
     camera = (FX, FY, CX, CY)

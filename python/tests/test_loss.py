@@ -100,6 +100,32 @@ def test_init_from_box_errors():
     assert not tracker.initialized
 
 
+@pytest.mark.parametrize(
+    "box, named",
+    [
+        ((4294967496, 60, 240, 130), "box x=4294967496 is out of range"),  # 200 + 2**32
+        ((0, 0, 99999999999, 50), "box w=99999999999 is out of range"),
+        ((0, 0, 1e30, 50), "box w=1e+30 is out of range"),
+        ((10, -(2**31) - 1, 50, 50), "box y=-2147483649 is out of range"),
+        ((10, 10, 50, 10**400), "box h=1000000000"),
+        ((10, 10, float("inf"), 50), "box w=inf is not finite"),
+    ],
+)
+def test_init_from_box_names_a_value_out_of_range_as_given(box, named):
+    frame = render(pentagon((150, 120), 50), seed=3)
+    tracker = scbt.Tracker()
+    with pytest.raises(ValueError) as info:
+        tracker.init_from_box(frame, box)
+    assert named in str(info.value)
+    assert not tracker.initialized
+
+
+def test_init_from_box_needs_numbers():
+    frame = render(pentagon((150, 120), 50), seed=3)
+    with pytest.raises(TypeError, match="box x=ten"):
+        scbt.Tracker().init_from_box(frame, ("ten", 10, 50, 50))
+
+
 def test_shape_distance_is_invariant_to_pose():
     a = pentagon((100, 100), 40)
     angle = np.deg2rad(25)

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <sstream>
 #include <stdexcept>
 
@@ -14,6 +15,16 @@ namespace scbt::ros_node {
 namespace {
 
 using XmlRpc::XmlRpcValue;
+
+// Every read goes through this: a parameter read but missing from node_parameter_names() would
+// be warned about as unknown though it is used.
+const std::string& known(const std::string& name) {
+  static const std::vector<std::string> names = node_parameter_names();
+  if (std::find(names.begin(), names.end(), name) == names.end()) {
+    throw std::logic_error("parameter ~" + name + " is read but not listed as known");
+  }
+  return name;
+}
 
 const char* type_name(XmlRpcValue::Type type) {
   switch (type) {
@@ -55,7 +66,7 @@ bool to_double(XmlRpcValue& value, double* out) {
 
 void read_double(const ros::NodeHandle& node, const std::string& name, double* out) {
   XmlRpcValue value;
-  if (!node.getParam(name, value)) return;
+  if (!node.getParam(known(name), value)) return;
   if (!to_double(value, out)) throw wrong_type(node, name, "a number", value.getType());
   if (!std::isfinite(*out)) {
     throw std::invalid_argument("parameter " + node.resolveName(name) + " must be finite");
@@ -64,7 +75,7 @@ void read_double(const ros::NodeHandle& node, const std::string& name, double* o
 
 void read_int(const ros::NodeHandle& node, const std::string& name, int* out) {
   XmlRpcValue value;
-  if (!node.getParam(name, value)) return;
+  if (!node.getParam(known(name), value)) return;
   if (value.getType() != XmlRpcValue::TypeInt) {
     throw wrong_type(node, name, "an integer", value.getType());
   }
@@ -73,7 +84,7 @@ void read_int(const ros::NodeHandle& node, const std::string& name, int* out) {
 
 void read_bool(const ros::NodeHandle& node, const std::string& name, bool* out) {
   XmlRpcValue value;
-  if (!node.getParam(name, value)) return;
+  if (!node.getParam(known(name), value)) return;
   if (value.getType() != XmlRpcValue::TypeBoolean) {
     throw wrong_type(node, name, "true or false", value.getType());
   }
@@ -110,7 +121,7 @@ std::vector<double> parse_numbers(const std::string& name, std::string text) {
 std::optional<std::vector<double>> read_numbers(const ros::NodeHandle& node,
                                                 const std::string& name) {
   XmlRpcValue value;
-  if (!node.getParam(name, value)) return std::nullopt;
+  if (!node.getParam(known(name), value)) return std::nullopt;
   // roscpp keeps a command-line `_init_box:=[1, 2, 3, 4]` as a string: parse it as the list.
   if (value.getType() == XmlRpcValue::TypeString) {
     return parse_numbers(node.resolveName(name), static_cast<std::string>(value));
@@ -181,6 +192,16 @@ TrackerOptions tracker_options_from_parameters(
 }
 
 cv::Rect pixel_box(double x, double y, double width, double height) {
+  for (const double value : {x, y, width, height}) {
+    // Rounded into an int below: a value beyond one would wrap or saturate into another box.
+    if (!(std::abs(value) <= std::numeric_limits<int>::max())) {
+      std::ostringstream text;
+      text.precision(15);
+      text << value;
+      throw std::invalid_argument("a box value (" + text.str() + ") is out of range (at most " +
+                                  std::to_string(std::numeric_limits<int>::max()) + " pixels)");
+    }
+  }
   const cv::Rect box(cvRound(x), cvRound(y), cvRound(width), cvRound(height));
   if (box.width <= 0 || box.height <= 0) {
     throw std::invalid_argument("a box needs a positive width and height");

@@ -59,7 +59,7 @@ std::vector<std::string> node_parameter_names();
 std::vector<std::string> unknown_parameters(const ros::NodeHandle& private_node);
 
 // The box (x, y, width, height) in whole pixels (rounded). Throws std::invalid_argument for a
-// negative corner or a non-positive width or height.
+// value beyond an int (naming it), a negative corner or a non-positive width or height.
 cv::Rect pixel_box(double x, double y, double width, double height);
 
 }  // namespace scbt::ros_node

@@ -28,6 +28,7 @@ std::string state_json(const FrameReport& report) {
   out["dropped_frames"] = report.dropped_total;
   out["dropped_since_last"] = report.dropped_since_last;
   out["missed_frames"] = report.missed_total;
+  if (report.event == FrameEvent::kFailed) out["reason"] = report.reason;
   nlohmann::json timings;
   timings["latency"] = report.latency_ms;
   if (const TrackResult* r = report.result) {

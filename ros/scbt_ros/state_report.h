@@ -32,10 +32,12 @@ struct FrameReport {
   const TrackResult* result = nullptr;  // kTracked only
   const Boundary3d* boundary_3d = nullptr;  // with depth
   double depth_ms = 0.0;                    // the lift to 3-D
+  std::string reason{};                     // kFailed: why (the tracker's error message)
 };
 
 // {"event": ..., "frame": ..., "state": ..., "confidence": ..., "held": ..., "timings_ms": {...},
-// "dropped_frames": ..., "missed_frames": ...} (docs/ros.md lists the fields).
+// "dropped_frames": ..., "missed_frames": ..., "reason": ... (failed frames)} (docs/ros.md lists
+// the fields).
 std::string state_json(const FrameReport& report);
 
 // The frame's state as a diagnostic named `name`: level OK while tracking (or just initialised),

@@ -59,13 +59,21 @@ void TrackerNode::note_sequence(std::uint32_t seq) {
   last_seq_ = seq;
 }
 
+bool TrackerNode::log_allowed(const std::string& reason) {
+  return log_throttle_.allow(reason, ros::WallTime::now().toSec());
+}
+
+std::string TrackerNode::image_encoding_error(const sensor_msgs::Image& image,
+                                              const std::string& topic) const {
+  return "image on " + topic + " has encoding '" + image.encoding +
+         "'; expected mono8, bgr8, rgb8, bgra8 or rgba8 (frame skipped)";
+}
+
 void TrackerNode::on_image(const sensor_msgs::ImageConstPtr& image) {
   note_sequence(image->header.seq);
   if (!is_tracker_encoding(image->encoding)) {
-    ROS_ERROR_STREAM_THROTTLE(5.0, "scbt: image on " << image_subscriber_.getTopic()
-                                                     << " has encoding '" << image->encoding
-                                                     << "'; expected mono8, bgr8, rgb8, bgra8 or "
-                                                        "rgba8 (frame skipped)");
+    const std::string error = image_encoding_error(*image, image_subscriber_.getTopic());
+    if (log_allowed(error)) ROS_ERROR_STREAM("scbt: " << error);
     return;
   }
   frames_.put(Frame{image, nullptr, nullptr, ros::WallTime::now()});
@@ -75,26 +83,19 @@ void TrackerNode::on_image_and_depth(const sensor_msgs::ImageConstPtr& image,
                                      const sensor_msgs::ImageConstPtr& depth,
                                      const sensor_msgs::CameraInfoConstPtr& camera_info) {
   note_sequence(image->header.seq);
+  std::string error;
   if (!is_tracker_encoding(image->encoding)) {
-    ROS_ERROR_STREAM_THROTTLE(5.0, "scbt: image on " << image_filter_.getTopic()
-                                                     << " has encoding '" << image->encoding
-                                                     << "'; expected mono8, bgr8, rgb8, bgra8 or "
-                                                        "rgba8 (frame skipped)");
-    return;
+    error = image_encoding_error(*image, image_filter_.getTopic());
+  } else if (!is_depth_encoding(depth->encoding)) {
+    error = "depth on " + depth_filter_.getTopic() + " has encoding '" + depth->encoding +
+            "'; expected 16UC1 (mm) or 32FC1 (m) (frame skipped)";
+  } else if (depth->width != image->width || depth->height != image->height) {
+    error = "depth is " + std::to_string(depth->width) + "x" + std::to_string(depth->height) +
+            " but the image is " + std::to_string(image->width) + "x" +
+            std::to_string(image->height) + "; register depth to the colour camera (frame skipped)";
   }
-  if (!is_depth_encoding(depth->encoding)) {
-    ROS_ERROR_STREAM_THROTTLE(5.0, "scbt: depth on " << depth_filter_.getTopic()
-                                                     << " has encoding '" << depth->encoding
-                                                     << "'; expected 16UC1 (mm) or 32FC1 (m) "
-                                                        "(frame skipped)");
-    return;
-  }
-  if (depth->width != image->width || depth->height != image->height) {
-    ROS_ERROR_STREAM_THROTTLE(5.0, "scbt: depth is " << depth->width << "x" << depth->height
-                                                     << " but the image is " << image->width << "x"
-                                                     << image->height
-                                                     << "; register depth to the colour camera "
-                                                        "(frame skipped)");
+  if (!error.empty()) {
+    if (log_allowed(error)) ROS_ERROR_STREAM("scbt: " << error);
     return;
   }
   frames_.put(Frame{image, depth, camera_info, ros::WallTime::now()});
@@ -146,9 +147,13 @@ void TrackerNode::run_worker() {
       process(*frame);
     } catch (const std::exception& e) {
       // A frame the tracker cannot take (e.g. another size than the one it was initialised on).
-      ROS_ERROR_STREAM_THROTTLE(
-          5.0, "scbt: frame " << frame->image->header.seq << " not tracked: " << e.what());
-      publish_state(*frame, FrameReport{FrameEvent::kFailed});
+      if (log_allowed(e.what())) {
+        ROS_ERROR_STREAM("scbt: frame " << frame->image->header.seq
+                                        << " not tracked: " << e.what());
+      }
+      FrameReport report{FrameEvent::kFailed};
+      report.reason = e.what();
+      publish_state(*frame, report);
     }
   }
 }
@@ -190,9 +195,11 @@ Boundary3d TrackerNode::lift_to_3d(const Frame& frame, const Polygon& boundary) 
       lift_boundary_to_3d(boundary, to_depth_image(frame.depth),
                           from_camera_info_msg(*frame.camera_info), options_.depth);
   if (!lifted.valid) {
-    ROS_WARN_STREAM_THROTTLE(5.0, "scbt: too little depth along the boundary ("
-                                      << lifted.n_valid << " of " << lifted.n_samples
-                                      << " samples): no centroid or normal published");
+    if (log_allowed("too little depth along the boundary")) {
+      ROS_WARN_STREAM("scbt: too little depth along the boundary ("
+                      << lifted.n_valid << " of " << lifted.n_samples
+                      << " samples): no centroid or normal published");
+    }
     return lifted;
   }
   // Depth registered to the colour image shares its frame: the image's header stamps both.

@@ -26,6 +26,7 @@
 #include "scbt/tracker/tracker.h"
 #include "scbt_ros/latest_slot.h"
 #include "scbt_ros/node_options.h"
+#include "scbt_ros/reason_throttle.h"
 #include "scbt_ros/state_report.h"
 
 namespace scbt::ros_node {
@@ -66,6 +67,10 @@ class TrackerNode {
   bool apply_init(const PendingInit& init, const cv::Mat& image);
   // Counts the images missing between this one's header.seq and the previous one's.
   void note_sequence(std::uint32_t seq);
+  // Whether an error or warning for `reason` is logged now: each reason at most once per 5 s
+  // (log_throttle_), a different one at once.
+  bool log_allowed(const std::string& reason);
+  std::string image_encoding_error(const sensor_msgs::Image& image, const std::string& topic) const;
 
   void run_worker();
   void process(const Frame& frame);
@@ -102,6 +107,7 @@ class TrackerNode {
   std::atomic<std::uint64_t> missed_{0};
   std::mutex init_mutex_;
   std::optional<PendingInit> pending_init_;
+  ReasonThrottle log_throttle_{5.0};  // the callbacks' and the worker's
 
   // The worker's own.
   Tracker tracker_;

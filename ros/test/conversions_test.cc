@@ -44,6 +44,17 @@ TEST(Conversions, RegionBecomesABox) {
   EXPECT_EQ(from_roi_msg(roi), cv::Rect(10, 20, 30, 40));
   roi.width = 0;
   EXPECT_THROW(from_roi_msg(roi), std::invalid_argument);
+  // uint32 offsets beyond an int are refused by value, not wrapped or saturated.
+  roi.width = 30;
+  roi.x_offset = 4294967295u;
+  try {
+    from_roi_msg(roi);
+    ADD_FAILURE() << "a box at x 4294967295 accepted";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("4294967295) is out of range"), std::string::npos)
+        << e.what();
+  }
+  EXPECT_THROW(pixel_box(0, 0, 1e30, 10), std::invalid_argument);
 }
 
 TEST(Conversions, RgbIsSwappedToBgrAndMonoIsShared) {
@@ -134,6 +145,16 @@ TEST(StateReport, TrackedFrameCarriesStateConfidenceHeldTimingsAndDrops) {
   const auto initialised = nlohmann::json::parse(state_json(FrameReport{FrameEvent::kInitialised}));
   EXPECT_EQ(initialised["state"], "tracking");
   EXPECT_TRUE(initialised["confidence"].is_null());
+  EXPECT_FALSE(initialised.contains("reason"));
+}
+
+TEST(StateReport, FailedFrameSaysWhy) {
+  FrameReport report{FrameEvent::kFailed};
+  report.reason = "frame size changed from 640x480 to 320x240";
+  const auto json = nlohmann::json::parse(state_json(report));
+  EXPECT_EQ(json["event"], "failed");
+  EXPECT_EQ(json["reason"], "frame size changed from 640x480 to 320x240");
+  EXPECT_FALSE(json.contains("state"));
 }
 
 }  // namespace

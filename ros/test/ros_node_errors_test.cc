@@ -48,6 +48,58 @@ TEST(RosNode, WrongEncodingIsLoggedAsAnErrorAndTheNodeGoesOn) {
   EXPECT_EQ(node.process.stop(), 0) << node.process.log();
 }
 
+// Waits up to 10 s for an ERROR line of `node` on /rosout containing `text`.
+::testing::AssertionResult error_logged(Inbox<rosgraph_msgs::Log>* log, const NodeUnderTest& node,
+                                        const std::string& text) {
+  while (const auto entry = log->pop(milliseconds(10000))) {
+    if (entry->name == "/" + node.name() && entry->level == rosgraph_msgs::Log::ERROR &&
+        entry->msg.find(text) != std::string::npos) {
+      return ::testing::AssertionSuccess();
+    }
+  }
+  return ::testing::AssertionFailure() << "no error containing \"" << text << "\" logged";
+}
+
+// Errors are limited per reason, not per line of code: a second, different bad image right after
+// the first is logged too, and a frame the tracker rejects says why in ~state.
+TEST(RosNode, EachDifferentErrorIsLoggedAndAFailedFrameSaysWhy) {
+  Inbox<rosgraph_msgs::Log> log;
+  ros::NodeHandle nh;
+  ros::Subscriber rosout = nh.subscribe<rosgraph_msgs::Log>(
+      "/rosout", 100, [&log](const rosgraph_msgs::LogConstPtr& m) { log.push(*m); });
+  const std::vector<SceneFrame> clip = render_test_clip(SceneShape::kBox, 11, 1);
+  ros::param::set("/scbt_why/init_polygon", flatten(clip[0].truth));
+  NodeUnderTest node("scbt_why");
+  ASSERT_TRUE(node.connected());
+  ASSERT_TRUE(wait_until([&] { return rosout.getNumPublishers() > 0; }, milliseconds(10000)));
+
+  node.publish(cv::Mat(480, 640, CV_16UC1, cv::Scalar(1200)), stamp_of(0),
+               sensor_msgs::image_encodings::TYPE_16UC1);
+  EXPECT_TRUE(error_logged(&log, node, "encoding '16UC1'")) << node.process.log();
+  node.publish(cv::Mat(480, 640, CV_16UC1, cv::Scalar(1200)), stamp_of(1),
+               sensor_msgs::image_encodings::MONO16);
+  EXPECT_TRUE(error_logged(&log, node, "encoding 'mono16'")) << node.process.log();
+
+  node.publish(clip[0].image, stamp_of(2));
+  auto state = node.states.pop(milliseconds(10000));
+  ASSERT_TRUE(state) << node.process.log();
+  EXPECT_EQ((*state)["event"], "initialised");
+  // Frames of other sizes than the one it was initialised on: failed, each with its reason, each
+  // reason logged.
+  int stamp = 3;
+  for (const cv::Size size : {cv::Size(320, 240), cv::Size(330, 240)}) {
+    node.publish(clip[0].image(cv::Rect(cv::Point(0, 0), size)).clone(), stamp_of(stamp++));
+    state = node.states.pop(milliseconds(10000));
+    ASSERT_TRUE(state) << node.process.log();
+    EXPECT_EQ((*state)["event"], "failed");
+    const std::string reason = (*state).value("reason", "");
+    EXPECT_NE(reason.find("to " + std::to_string(size.width) + "x240"), std::string::npos)
+        << reason;
+    EXPECT_TRUE(error_logged(&log, node, reason)) << node.process.log();
+  }
+  EXPECT_EQ(node.process.stop(), 0) << node.process.log();
+}
+
 // Starts the node with `args` and expects it to exit with code 2 within 20 s, its log naming
 // `expected`.
 void expect_refused(const std::string& name, const std::vector<std::string>& args,
@@ -73,10 +125,15 @@ TEST(RosNode, BadParametersStopItWithAnErrorNamingThem) {
 }
 
 TEST(RosNode, UnknownParametersAreWarnedAbout) {
-  NodeUnderTest node("scbt_typo", {"_filter_distanse:=10"});
+  NodeUnderTest node("scbt_typo", {"_filter_distanse:=10", "_min_depth:=0.2", "_max_depth:=4.5"});
   ASSERT_TRUE(node.connected());
   EXPECT_NE(node.process.log().find("unknown parameter /scbt_typo/filter_distanse"),
             std::string::npos)
+      << node.process.log();
+  // Known ones, though not the tracker's.
+  EXPECT_EQ(node.process.log().find("unknown parameter /scbt_typo/min_depth"), std::string::npos)
+      << node.process.log();
+  EXPECT_EQ(node.process.log().find("unknown parameter /scbt_typo/max_depth"), std::string::npos)
       << node.process.log();
   EXPECT_EQ(node.process.stop(), 0);
 }

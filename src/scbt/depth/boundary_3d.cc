@@ -117,7 +117,12 @@ Boundary3d lift_boundary_to_3d(const Polygon& boundary, const cv::Mat& depth,
   camera.check();
   check_depth_image(depth);
   Boundary3d result;
-  const std::vector<BoundarySample> samples = sample_boundary_inward(boundary, options.sample_step);
+  // Only where a sample's window reaches the depth image can depth be read: along the edges,
+  // nowhere else (the vertices outside still close the curve, whose parts there the plane gives).
+  const double reach = options.window_offset + options.window_length + options.window_half_width;
+  const SampleRegion region{-reach - 1.0, -reach - 1.0, depth.cols + reach, depth.rows + reach};
+  const std::vector<BoundarySample> samples =
+      sample_boundary_inward(boundary, options.sample_step, region);
   const std::size_t n = samples.size();
   result.n_samples = static_cast<int>(n);
   if (n == 0) return result;

@@ -2,15 +2,17 @@
 // centroid, its plane and, for a near-circular rim, its circle -- what the paper's robot
 // experiment needs to pour into a bowl (Qin et al. 2017, Sec. V).
 //
-// Steps: sample the boundary (every vertex and every options.sample_step pixels); read each
-// sample's depth as the nearest surface in a small window on the object's side
-// (depth_window.h); drop depths that break the curve's local trend (curve_outliers.h); lift the
-// rest along the rays of the pixels they were read at; fit a robust plane (plane_fit.h); intersect
-// every sample's ray with that plane (so samples whose depth is missing still count, with less
-// noise than their own depth); take the arc-length centroid of that closed curve
-// (curve_centroid.h); fit a circle to all lifted samples and report it when their RMS distance
-// to it is at most circle_max_relative_rms of its radius (all samples, not only the vertices: a
-// tracked vertex is the end of a least-squares segment, which lies outside an arc).
+// Steps: sample the boundary (every vertex, and every options.sample_step pixels along the edges
+// where depth can be read -- near the depth image -- at most about kMaxEdgeSamples of them:
+// boundary_samples.h); read each sample's depth as the nearest surface in a small window on the
+// object's side (depth_window.h); drop depths that break the curve's local trend
+// (curve_outliers.h); lift the rest along the rays of the pixels they were read at; fit a robust
+// plane (plane_fit.h); intersect every sample's ray with that plane (so samples whose depth is
+// missing still count, with less noise than their own depth); take the arc-length centroid of
+// that closed curve (curve_centroid.h); fit a circle to all lifted samples and report it when
+// their RMS distance to it is at most circle_max_relative_rms of its radius (all samples, not
+// only the vertices: a tracked vertex is the end of a least-squares segment, which lies outside
+// an arc).
 #pragma once
 
 #include <Eigen/Core>

@@ -71,6 +71,36 @@ TEST(Boundary3d, ARectangleIsNotACircle) {
   EXPECT_NEAR(rim.centroid.x(), (320 - 319.5) * 0.9 / 525, 1e-9);
 }
 
+// A boundary grown 1000 times about the image centre lies far outside the depth image: its
+// samples are its vertices, not one every 3 px of its 1.4 million px (which took memory in
+// proportion).
+TEST(Boundary3d, ABoundaryFarOutsideTheImageTakesNoMoreSamplesThanItsVertices) {
+  const DiskScene scene;
+  Polygon grown = scene.boundary(72);
+  for (Point& p : grown) p = Point(319.5, 239.5) + (p - Point(319.5, 239.5)) * 1000.0;
+  const Boundary3d rim = lift_boundary_to_3d(grown, scene.depth(), scene.camera);
+  EXPECT_EQ(rim.n_samples, 72);
+  EXPECT_FALSE(rim.valid);
+}
+
+// A rim partly outside the image: the samples along its edges stop at the image, its vertices
+// outside still close the curve, so the centroid is the whole rim's.
+TEST(Boundary3d, ARimPartlyOutsideTheImageKeepsItsCentroid) {
+  DiskScene scene;
+  scene.centre = Eigen::Vector3d(0.45, -0.02, 0.8);  // its right part beyond the image's edge
+  const Polygon rim_outline = scene.boundary(72);
+  const cv::Mat depth = scene.depth();
+  int outside = 0;
+  for (const Point& p : rim_outline) outside += p.x > depth.cols;
+  ASSERT_GT(outside, 10);
+  const Boundary3d rim = lift_boundary_to_3d(rim_outline, depth, scene.camera);
+  ASSERT_TRUE(rim.valid);
+  int beyond = 0;
+  for (const Point& s : rim.samples) beyond += s.x > depth.cols + 10.0;
+  EXPECT_LE(beyond, outside);  // vertices only
+  EXPECT_LT((rim.centroid - scene.centre).norm(), 0.003);
+}
+
 TEST(Boundary3d, InvalidWithoutDepthAndErrorsForBadInput) {
   const DiskScene scene;
   const cv::Mat holes(480, 640, CV_16UC1, cv::Scalar(0));

@@ -8,24 +8,37 @@
 
 namespace scbt {
 
+namespace {
+
+// True when `m` is the only header on a buffer OpenCV allocated: writing into it changes no other
+// Mat. A view of a caller's frame (a header over a numpy array has no UMatData at all, one over
+// a cv::Mat shares its count) is not.
+bool sole_owner(const cv::Mat& m) { return m.u != nullptr && m.u->refcount == 1; }
+
+}  // namespace
+
 void to_gray(const cv::Mat& frame, cv::Mat* gray) {
   if (frame.empty()) throw std::invalid_argument("frame is empty");
   if (frame.depth() != CV_8U) {
     throw std::invalid_argument("frame must be 8-bit, got depth " + std::to_string(frame.depth()));
   }
+  if (frame.channels() != 1 && frame.channels() != 3 && frame.channels() != 4) {
+    throw std::invalid_argument("frame must have 1, 3 or 4 channels, got " +
+                                std::to_string(frame.channels()));
+  }
+  // `gray` may still be a view of an earlier caller's frame, or be shared: never write into
+  // that; a new buffer instead.
+  if (!sole_owner(*gray)) gray->release();
   switch (frame.channels()) {
     case 1:
-      *gray = frame;
+      frame.copyTo(*gray);
       return;
     case 3:
       cv::cvtColor(frame, *gray, cv::COLOR_BGR2GRAY);
       return;
-    case 4:
+    default:
       cv::cvtColor(frame, *gray, cv::COLOR_BGRA2GRAY);
       return;
-    default:
-      throw std::invalid_argument("frame must have 1, 3 or 4 channels, got " +
-                                  std::to_string(frame.channels()));
   }
 }
 

@@ -8,7 +8,9 @@
 
 namespace scbt {
 
-// Converts an 8-bit frame of 1, 3 or 4 channels to grey (no copy for grey input).
+// Converts an 8-bit frame of 1, 3 or 4 channels to grey (a copy for grey input), into a buffer of
+// `gray`'s own: reused when `gray` alone holds it, never one another Mat shares, so the result
+// never aliases the frame and an earlier frame `gray` still viewed is never written.
 // Throws std::invalid_argument for anything else.
 void to_gray(const cv::Mat& frame, cv::Mat* gray);
 

@@ -70,10 +70,8 @@ void Tracker::scale_thresholds_to_exposure(const cv::Mat& frame) {
 }
 
 void Tracker::to_exposed_gray(const cv::Mat& part, cv::Mat* gray) const {
-  to_gray(part, gray);
+  to_gray(part, gray);  // a buffer of the tracker's own, never the caller's frame
   if (exposure_stretch_.gain <= 1.0) return;
-  // Grey input comes back as a view of the caller's frame, which must not be written.
-  if (gray->data == part.data) *gray = gray->clone();
   apply_grey_stretch(exposure_stretch_, gray);
 }
 
@@ -100,7 +98,6 @@ void Tracker::init(const cv::Mat& frame, const Polygon& polygon) {
   edge_blur_sigma_ = -1.0;
   scale_thresholds_to_exposure(frame);  // the exposure's stretch is what the blur estimate needs
   to_exposed_gray(frame, &reference_gray_);
-  reference_gray_ = reference_gray_.clone();
   measure_edge_blur(reference_gray_, cv::Point(0, 0));
   scale_thresholds_to_exposure(frame);
   frame_size_ = frame.size();
@@ -236,19 +233,14 @@ bool Tracker::keeps_motion_reference() const {
   return options_.recover_by_motion || (options_.predict_motion && options_.measure_motion);
 }
 
-void Tracker::remember_reference(const cv::Mat& frame, const Attempt& a) {
+void Tracker::remember_reference(const Attempt& a) {
   // The reference is the window the image motion is measured against (recovery, prediction).
   if (!keeps_motion_reference()) return;
   settle_appearance();
   reference_roi_ = a.roi;
-  if (frame.channels() == 1) {
-    // Grey input is a view of the caller's frame: a deep copy, into the reused buffer.
-    gray_.copyTo(reference_gray_);
-  } else {
-    // gray_ holds its own conversion: hand it over instead of copying it; the next frame's
-    // conversion then reuses the old reference's buffer.
-    std::swap(gray_, reference_gray_);
-  }
+  // gray_ holds its own conversion (to_gray): hand it over instead of copying it; the next
+  // frame's conversion then reuses the old reference's buffer.
+  std::swap(gray_, reference_gray_);
 }
 
 void Tracker::report_attempt(const Attempt& a, TrackResult* result) {
@@ -335,7 +327,7 @@ TrackResult Tracker::track(const cv::Mat& frame) {
     }
     // This frame's appearance replaces a pending one, which need not be read first.
     if (options_.predict_motion && options_.confirm_motion) appearance_pending_ = false;
-    remember_reference(frame, *a);
+    remember_reference(*a);
     motion_.update(boundary_);
     remember_appearance(frame);
   } else {

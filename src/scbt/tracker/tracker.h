@@ -93,6 +93,7 @@ class Tracker {
   Polygon init_from_box(const cv::Mat& frame, const cv::Rect& box);
 
   // Tracks the boundary into `frame` (8-bit grey, BGR or BGRA). Requires init().
+  // Frames, in every call, are only read, and only during it: none is written or kept.
   TrackResult track(const cv::Mat& frame);
 
   bool initialized() const { return !boundary_.empty(); }
@@ -238,7 +239,7 @@ class Tracker {
   void resume_tracking_from(const cv::Mat& frame, Polygon boundary, TrackResult* result);
   // After a frame whose boundary was found by attempt `a`: its grey window becomes the motion
   // reference (TrackerOptions::recover_by_motion).
-  void remember_reference(const cv::Mat& frame, const Attempt& a);
+  void remember_reference(const Attempt& a);
   // The statistics (and, when kept, the debug view) of the attempt whose boundary is reported.
   void report_attempt(const Attempt& a, TrackResult* result);
   // [0] and [1]: the search where the boundary is predicted (and its threshold retry or a

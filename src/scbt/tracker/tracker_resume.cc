@@ -21,7 +21,7 @@ bool Tracker::resume_in_place(const cv::Mat& frame, TrackResult* result) {
     // the object is found again where tracking would have gone, not where it was lost.
     boundary_ = std::move(cycle);
     boundary_area_ = a->cycles->area(a->choice->index);
-    remember_reference(frame, *a);
+    remember_reference(*a);
     return false;
   }
   result->evidence = evidence;
@@ -51,8 +51,7 @@ void Tracker::resume_tracking_from(const cv::Mat& frame, Polygon boundary, Track
   reference_roi_ = detection_roi(
       boundary_, options_.filter_distance + options_.detector.roi_padding, frame_size_);
   if (reference_roi_.empty()) reference_roi_ = cv::Rect(cv::Point(0, 0), frame_size_);
-  to_exposed_gray(frame(reference_roi_), &cut_gray_);
-  cut_gray_.copyTo(reference_gray_);  // a deep copy: grey input is a view of the caller's frame
+  to_exposed_gray(frame(reference_roi_), &reference_gray_);
   if (options_.predict_motion && options_.confirm_motion) {
     appearance_pending_ = false;
     appearance_.remember(frame, boundary_);

@@ -171,7 +171,8 @@ TEST(ToGray, ChannelsAndDepths) {
   cv::Mat gray;
   const cv::Mat one(10, 12, CV_8UC1, cv::Scalar(7));
   to_gray(one, &gray);
-  EXPECT_EQ(gray.data, one.data);  // no copy
+  EXPECT_NE(gray.data, one.data);  // a copy (frame_ownership_test.cc)
+  EXPECT_EQ(gray.at<uchar>(3, 4), 7);
   to_gray(cv::Mat(10, 12, CV_8UC3, cv::Scalar(100, 100, 100)), &gray);
   EXPECT_EQ(gray.type(), CV_8UC1);
   EXPECT_EQ(gray.at<uchar>(3, 4), 100);
