@@ -837,6 +837,10 @@ TEST_F(CliRunTest, StartFrameTakesItsLineOfAPolygonPerFrameFile) {
   std::vector<std::string> lines = read_text_lines((dir_ / "out.txt").string());
   ASSERT_EQ(static_cast<int>(lines.size()), n - 4);
   EXPECT_EQ(lines[0], read_text_lines((dir_ / "truth.txt").string())[4]);
+  // Beyond the input (and the file): the start frame is refused, no line is taken.
+  r = run_scbt(dir_, "track seq --init truth.txt -o out.txt -q --start-frame 20");
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  EXPECT_NE(r.err.find("--start-frame 20 is beyond the input"), std::string::npos) << r.err;
 
   // Two lines for eight frames: not one per frame.
   write_file(dir_ / "two.txt", read_text_lines((dir_ / "truth.txt").string())[0] + "\n" +

@@ -45,7 +45,7 @@ InitialPolygon choose_initial_polygon(const TrackRunOptions& options, int input_
     }
     const int count = static_cast<int>(lines.size());
     const int start = options.start_frame;
-    if (count > 1 && count == input_frames) {
+    if (count > 1 && count == input_frames && start <= count) {
       chosen.line = start;  // one polygon per frame, as a ground-truth file: frame N's own
     } else if (count > 1 && start > 1) {
       chosen.warning = printable(options.init_file) + " has " + std::to_string(count) +
@@ -86,8 +86,8 @@ cv::Rect parse_init_box(const std::string& text) {
     constexpr long long kLimit = 1000000;  // beyond any frame scbt can track
     if (errno == ERANGE || values[i] < -kLimit || values[i] > kLimit) {
       throw std::invalid_argument("--init-box: " + std::string("xywh").substr(i, 1) + " = " +
-                                  token + " is out of range (at most " + std::to_string(kLimit) +
-                                  " in magnitude)");
+                                  printable(token) + " is out of range (at most " +
+                                  std::to_string(kLimit) + " in magnitude)");
     }
   }
   if (values[2] <= 0 || values[3] <= 0) {
