@@ -230,12 +230,24 @@ std::vector<Case> make_cases() {
        kTrack, 3, "seq/0006.png: frame size changed from 160x120 to 100x100 (frame 6)", n},
       {"polygon with 2 points", no_setup, inline_track + "'" + a + " " + b + "'", 2,
        "at least 3 distinct vertices", -1},
+      // A vertex repeating the one before it (ground-truth files have them) is dropped, with a
+      // note; a vertex repeated elsewhere cannot be a boundary's.
       {"polygon repeating a point", no_setup,
-       inline_track + "'" + a + " " + b + " " + b + " " + c + "'", 2, "repeats a vertex", -1},
+       inline_track + "'" + a + " " + b + " " + b + " " + c + "'", 0,
+       "scbt: note: --init-points: 1 repeated vertex(es) dropped from the initial polygon", n},
+      {"polygon file repeating its first point last",
+       init_file(format_polygon_line(Polygon{t[0], t[1], t[2], t[3], t[0]}) + "\n"), kTrack, 0,
+       "scbt: note: init.txt:1: 1 repeated vertex(es) dropped", n},
+      {"polygon going back to a point", no_setup,
+       inline_track + "'" + a + " " + b + " " + c + " " + b + "'", 2, "repeats a vertex", -1},
       {"self-intersecting polygon", no_setup, inline_track + "'10,10 100,10 10,90 60,100'", 2,
-       "intersects itself", -1},
+       "polygon crosses itself", -1},
+      {"bowtie polygon", no_setup, inline_track + "'10,10 100,10 10,90 100,90'", 2,
+       "polygon crosses itself", -1},
       {"zero-area polygon", no_setup, inline_track + "'10,10 20,20 30,30 40,40'", 2,
-       "encloses no area", -1},
+       "polygon encloses no area (its vertices lie on one line)", -1},
+      {"polygon of half a pixel", no_setup, inline_track + "'10,10 11,10 10,11'", 2,
+       "polygon encloses 0.5 px², smaller than 1 px²", -1},
       {"polygon outside the frame", no_setup, inline_track + "'10,10 500,10 500,90'", 2,
        "is outside the 160x120 frame", -1},
       {"NaN in --init-points", no_setup, inline_track + "'10,10 nan,10 50,90'", 2, "not finite",
@@ -261,6 +273,27 @@ std::vector<Case> make_cases() {
        kTrack, 1, "init.txt:1:", -1},
       {"missing polygon file", no_setup, "track seq --init none.txt -o out.txt", 1,
        "none.txt: cannot open for reading", -1},
+      {"folder as polygon file",
+       [](const fs::path& dir) { fs::create_directory(dir / "polygons"); },
+       "track seq --init polygons -o out.txt", 1, "scbt: error: polygons: is a folder, not a file",
+       -1},
+      {"NUL byte in the polygon file", init_file(std::string("3 10 10 6\0 10 50 90\n", 20)), kTrack,
+       1, "init.txt:1: coordinate '6\\x00' is not a number", -1},
+      // --init-box: values as given, never wrapped; CSV-only runs.
+      {"init box beyond 32 bits", no_setup,
+       "track seq -o out.txt -q --init-box 4294967496,260,240,130", 2,
+       "scbt: error: --init-box: x = 4294967496 is out of range", -1},
+      {"init box width beyond 32 bits", no_setup,
+       "track seq -o out.txt -q --init-box 0,0,99999999999,10", 2,
+       "--init-box: w = 99999999999 is out of range", -1},
+      {"init box with a fraction", no_setup, "track seq -o out.txt -q --init-box 1,2,3.5,4", 2,
+       "--init-box must be four integers x,y,w,h (pixels), got '1,2,3.5,4'", -1},
+      {"CSV-only run", no_setup, "track seq --init init.txt --csv stats.csv -q", 0, "", -1,
+       [n](const fs::path& dir, const std::string&) {
+         EXPECT_EQ(static_cast<int>(read_text_lines((dir / "stats.csv").string()).size()), n);
+       }},
+      {"no output at all", no_setup, "track seq --init init.txt -q", 2,
+       "nothing to write: give -o/--output, --csv, --video, --frames-out or --points3d", -1},
       {"filter distance out of range", no_setup, kTrack + "--filter-distance -1", 2,
        "filter_distance must be in (0, 1000]", -1},
       {"area similarity out of range", no_setup, kTrack + "--min-area-similarity 2", 2,
@@ -367,15 +400,26 @@ std::vector<Case> make_cases() {
        // Files may grow to 6 KiB only (ulimit counts 512-byte blocks): the results can, the
        // video (5.5 KiB of AVI header, then the frames) cannot.
        "trap '' XFSZ; ulimit -f 12;"},
+      {"annotated frames on a full disk", no_setup,
+       "track seq --init init.txt -o /dev/null -q --frames-out frames", 1,
+       "frames/0001.jpg: write failed: File too large", -1,
+       [](const fs::path& dir, const std::string&) {
+         EXPECT_TRUE(!fs::exists(dir / "frames") || fs::is_empty(dir / "frames"))
+             << "a partial frame left behind";
+       },
+       // 1 KiB per file: less than any annotated frame.
+       "trap '' XFSZ; ulimit -f 2;"},
       // Bounded reads.
       {"init file that never ends", no_setup, "track seq --init /dev/zero -o out.txt", 1,
        "/dev/zero:1: line longer than 1 MiB", -1},
       {"init polygon over the vertex limit",
        [](const fs::path& dir) {
+         // Large enough for neighbours to stay apart at two decimals: a repeated vertex would be
+         // dropped.
          Polygon circle;
          for (int i = 0; i <= kMaxBoundaryVertices; ++i) {
            const double angle = 2.0 * M_PI * i / (kMaxBoundaryVertices + 1);
-           circle.emplace_back(80 + 30 * std::cos(angle), 60 + 30 * std::sin(angle));
+           circle.emplace_back(80 + 55 * std::cos(angle), 60 + 55 * std::sin(angle));
          }
          write_file(dir / "init.txt", format_polygon_line(circle) + "\n");
        },
@@ -656,6 +700,171 @@ TEST_F(CliRunTest, StdoutStreamsLiveAndAClosedPipeEndsTheRunCleanly) {
   EXPECT_LT(reached, frames);
   EXPECT_EQ(static_cast<int>(read_text_lines((dir_ / "out.csv").string()).size()), reached);
   expect_no_temporary_files(dir_);
+}
+
+// Runs `command` (shell code, in dir) and returns its exit code.
+int run_shell(const fs::path& dir, const std::string& command) {
+  const int status = std::system(("cd '" + dir.string() + "' && " + command).c_str());
+  return WIFEXITED(status) ? WEXITSTATUS(status) : 1000 + WTERMSIG(status);
+}
+
+void expect_only_polygon_lines(const fs::path& path, int count) {
+  const std::vector<std::string> lines = read_text_lines(path.string());
+  EXPECT_EQ(static_cast<int>(lines.size()), count) << path;
+  for (const std::string& line : lines) {
+    Polygon polygon;
+    std::string error;
+    EXPECT_TRUE(try_parse_polygon_line(line, &polygon, &error)) << line << ": " << error;
+  }
+}
+
+// Closed standard descriptors are not taken over by outputs: the progress bar never lands in the
+// results, streamed results never in the CSV.
+TEST_F(CliRunTest, ClosedStandardDescriptorsAreNotTakenOverByOutputs) {
+  const int n = static_cast<int>(sequence().frames.size());
+  const std::string scbt = std::string("'") + SCBT_BINARY + "' ";
+  EXPECT_EQ(run_shell(dir_, scbt + "track seq --init init.txt -o out.txt 2>&-"), 0);
+  expect_only_polygon_lines(dir_ / "out.txt", n);
+  EXPECT_EQ(run_shell(dir_, scbt + "track seq --init init.txt -o - --csv out.csv -q >&-"), 0);
+  const std::vector<std::string> rows = read_text_lines((dir_ / "out.csv").string());
+  ASSERT_EQ(static_cast<int>(rows.size()), n);
+  for (size_t i = 1; i < rows.size(); ++i) {
+    EXPECT_EQ(rows[i].rfind(std::to_string(i + 1) + ",", 0), 0u) << rows[i];
+  }
+  EXPECT_EQ(run_shell(dir_, scbt + "track seq --init init.txt -o out.txt -q <&- >&- 2>&-"), 0);
+  expect_only_polygon_lines(dir_ / "out.txt", n);
+}
+
+// Whether `pid` catches `signal_number` (its handler is installed): /proc/PID/status, SigCgt.
+bool catches(pid_t pid, int signal_number) {
+  std::ifstream status("/proc/" + std::to_string(pid) + "/status");
+  for (std::string line; std::getline(status, line);) {
+    if (line.rfind("SigCgt:", 0) == 0) {
+      const unsigned long long mask = std::stoull(line.substr(7), nullptr, 16);
+      return (mask >> (signal_number - 1)) & 1u;
+    }
+  }
+  return false;
+}
+
+// Starts scbt with `args` in dir (stderr to dir/stderr.txt), `prefix` shell code first.
+pid_t start_scbt(const fs::path& dir, const std::string& args, const std::string& prefix = "") {
+  const pid_t child = ::fork();
+  if (child == 0) {
+    const std::string command =
+        prefix + " exec '" + std::string(SCBT_BINARY) + "' " + args + " 2> stderr.txt > /dev/null";
+    if (::chdir(dir.c_str()) != 0) ::_exit(127);
+    ::execl("/bin/sh", "sh", "-c", command.c_str(), static_cast<char*>(nullptr));
+    ::_exit(127);
+  }
+  return child;
+}
+
+int wait_exit_code(pid_t child) {
+  int status = 0;
+  if (::waitpid(child, &status, 0) != child) return -1;
+  return WIFEXITED(status) ? WEXITSTATUS(status) : 1000 + WTERMSIG(status);
+}
+
+// A run waiting on a FIFO (an output without a reader, a camera info without a writer) ends on
+// SIGTERM with 143, naming what it waited for, not with "Interrupted system call".
+void expect_sigterm_ends_a_wait(const fs::path& dir, const std::string& args,
+                                const std::string& message) {
+  ASSERT_EQ(::mkfifo((dir / "fifo").c_str(), 0600), 0);
+  const pid_t child = start_scbt(dir, args);
+  ASSERT_GT(child, 0);
+  for (int wait = 0; wait < 600 && !catches(child, SIGTERM); ++wait) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(50));
+  }
+  std::this_thread::sleep_for(std::chrono::milliseconds(500));  // into the wait
+  ::kill(child, SIGTERM);
+  const int code = wait_exit_code(child);
+  const std::string err = read_file(dir / "stderr.txt");
+  EXPECT_EQ(code, 143) << err;
+  EXPECT_NE(err.find(message), std::string::npos) << err;
+  EXPECT_EQ(err.find("Interrupted system call"), std::string::npos) << err;
+  expect_no_temporary_files(dir);
+}
+
+TEST_F(CliRunTest, SigtermWhileAnOutputFifoWaitsForItsReader) {
+  expect_sigterm_ends_a_wait(dir_, "track seq --init init.txt -o fifo -q",
+                             "scbt: error: fifo: waiting for a reader: interrupted by SIGTERM");
+}
+
+TEST_F(CliRunTest, SigtermWhileACameraInfoFifoWaitsForItsWriter) {
+  expect_sigterm_ends_a_wait(
+      dir_,
+      "track seq --init init.txt -o out.txt -q --depth seq --camera-info fifo --points3d p.csv",
+      "scbt: error: fifo: interrupted by SIGTERM");
+  EXPECT_FALSE(fs::exists(dir_ / "out.txt"));
+}
+
+// An inherited SIG_IGN stays (nohup, a script's background job): SIGHUP and SIGINT do not end
+// the run; SIGTERM still does.
+TEST_F(CliRunTest, IgnoredHangupAndInterruptStayIgnored) {
+  lengthen_sequence(dir_, 4000);
+  const pid_t child =
+      start_scbt(dir_, "track seq --init init.txt -o out.txt -q --csv out.csv", "trap '' HUP INT;");
+  ASSERT_GT(child, 0);
+  wait_until_tracking(dir_);
+  EXPECT_FALSE(catches(child, SIGHUP));
+  EXPECT_FALSE(catches(child, SIGINT));
+  ::kill(child, SIGHUP);
+  ::kill(child, SIGINT);
+  std::this_thread::sleep_for(std::chrono::milliseconds(300));
+  int status = 0;
+  EXPECT_EQ(::waitpid(child, &status, WNOHANG), 0) << "the run ended on an ignored signal";
+  ::kill(child, SIGTERM);
+  EXPECT_EQ(wait_exit_code(child), 143) << read_file(dir_ / "stderr.txt");
+  EXPECT_NE(read_file(dir_ / "stderr.txt").find("interrupted by SIGTERM"), std::string::npos);
+}
+
+// --start-frame N with a file of one polygon per frame (a ground-truth file): line N is the
+// boundary on frame N. With any other number of lines, line 1, and a warning says so.
+TEST_F(CliRunTest, StartFrameTakesItsLineOfAPolygonPerFrameFile) {
+  const int n = static_cast<int>(sequence().frames.size());
+  // One polygon per frame, each its own (a box shifted by its frame number).
+  std::string truth;
+  for (int k = 1; k <= n; ++k) {
+    const double x = 20 + k, y = 30;
+    truth +=
+        format_polygon_line(Polygon{{x, y}, {x + 40, y}, {x + 40, y + 30}, {x, y + 30}}) + "\n";
+  }
+  write_file(dir_ / "truth.txt", truth + "\n");  // a trailing blank line is not a frame
+  RunResult r = run_scbt(dir_, "track seq --init truth.txt -o out.txt -q --start-frame 5");
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(r.err, "");
+  std::vector<std::string> lines = read_text_lines((dir_ / "out.txt").string());
+  ASSERT_EQ(static_cast<int>(lines.size()), n - 4);
+  EXPECT_EQ(lines[0], read_text_lines((dir_ / "truth.txt").string())[4]);
+  // Beyond the input (and the file): the start frame is refused, no line is taken.
+  r = run_scbt(dir_, "track seq --init truth.txt -o out.txt -q --start-frame 20");
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  EXPECT_NE(r.err.find("--start-frame 20 is beyond the input"), std::string::npos) << r.err;
+
+  // Two lines for eight frames: not one per frame.
+  write_file(dir_ / "two.txt", read_text_lines((dir_ / "truth.txt").string())[0] + "\n" +
+                                   read_text_lines((dir_ / "truth.txt").string())[1] + "\n");
+  r = run_scbt(dir_, "track seq --init two.txt -o out.txt -q --start-frame 5");
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.err.find("scbt: warning: two.txt has 2 lines, not one per frame of seq (" +
+                       std::to_string(n) + " frames): its first line is the boundary on frame 5"),
+            std::string::npos)
+      << r.err;
+  lines = read_text_lines((dir_ / "out.txt").string());
+  ASSERT_FALSE(lines.empty());
+  EXPECT_EQ(lines[0], read_text_lines((dir_ / "truth.txt").string())[0]);
+}
+
+// Progress counts the frames that will run; written to a file (no terminal), it is plain lines
+// without carriage returns.
+TEST_F(CliRunTest, ProgressCountsTheFramesThatRunAndWritesPlainLinesToAFile) {
+  const RunResult r = run_scbt(dir_, "track seq --init init.txt -o out.txt --max-frames 5");
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(r.err.find('\r'), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("tracking: 5/5 frames (100%)"), std::string::npos) << r.err;
+  EXPECT_EQ(r.err.find("/8"), std::string::npos) << r.err;
+  EXPECT_EQ(static_cast<int>(read_text_lines((dir_ / "out.txt").string()).size()), 5);
 }
 
 }  // namespace

@@ -184,7 +184,30 @@ TEST(CliDepth, ClearErrorsForBadDepthInput) {
       {"colour --init init.txt -o r.txt --depth tum --intrinsics 525,525,319.5,239.5 --points3d "
        "p.csv",
        "INPUT must be that folder too", 2},
+      // Read with a limit (an endless file stops there), and the limit is named.
+      {base + "--depth depth --camera-info endless.yaml --points3d p.csv",
+       "endless.yaml: larger than 1 MiB, the limit for a camera info file", 1},
+      {base + "--depth depth --camera-info depth --points3d p.csv",
+       "depth: is a folder, not a file", 1},
+      {base + "--depth float_depth --intrinsics 525,525,319.5,239.5 --points3d p.csv",
+       "a depth image must be single-channel 16-bit unsigned (depth units, --depth-scale metres "
+       "each), got 1 channel of 32-bit float",
+       1},
+      {base + "--depth depth --intrinsics 525,525,319.5,239.5 --depth-scale 1e308 --points3d p.csv",
+       "--depth-scale 1e+308: a 16-bit depth image's values 1..65535 would be 1e+308..inf m, none "
+       "of them within the valid depths 0.1..10 m",
+       2},
+      {base + "--depth depth --intrinsics 525,525,319.5,239.5 --depth-scale 1e-9 --points3d p.csv",
+       "none of them within the valid depths", 2},
   };
+  fs::create_symlink("/dev/zero", clip.dir / "endless.yaml");
+  fs::create_directory(clip.dir / "float_depth");
+  for (const fs::directory_entry& e : fs::directory_iterator(clip.dir / "depth")) {
+    cv::Mat depth = cv::imread(e.path().string(), cv::IMREAD_UNCHANGED);
+    depth.convertTo(depth, CV_32F, 0.001);
+    const fs::path tiff = clip.dir / "float_depth" / e.path().filename().replace_extension(".tif");
+    ASSERT_TRUE(cv::imwrite(tiff.string(), depth));
+  }
   for (const Case& c : cases) {
     std::string err;
     const int code = run(clip, c.args, &err);

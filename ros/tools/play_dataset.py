@@ -2,6 +2,7 @@
 """Plays one sequence of the public dataset to a running scbt_node and records what it publishes.
 
     play_dataset.py --dataset DIR --sequence Bowl [--node /scbt] [--rate 30] [--out results/]
+                    [--max-frames N]
 
 Frames (OriginalVideosAVI/<Seq>/NNNN.jpg) go out as bgr8 sensor_msgs/Image on --image (default
 /camera/image_raw, what the launch file's node reads), stamped 1/rate apart; the ground truth's
@@ -9,7 +10,9 @@ first polygon initialises the node through <node>/init. Each frame's boundary is
 written to <out>/<Seq>.txt, one polygon per frame (a frame the node dropped gets the boundary
 published before it: what a subscriber had then), so `scbt eval --results ros=<out>` scores it.
 --rate 0 plays lock-step: each frame after the previous one's boundary came back (nothing
-dropped). Prints frames sent, boundaries received and the node's dropped/missed counts.
+dropped). --max-frames N plays only the first N frames. Frames are read from disk one at a time
+as they are sent, so a long sequence takes the memory of one frame. Prints frames sent,
+boundaries received and the node's dropped/missed counts.
 """
 import argparse
 import json
@@ -19,10 +22,22 @@ import threading
 import time
 
 import cv2
-import rospy
-from geometry_msgs.msg import Point32, PolygonStamped
-from sensor_msgs.msg import Image
-from std_msgs.msg import String
+
+
+def frame_names(frames_dir, max_frames=0):
+    """The sequence's frame files (NNNN.jpg) in order, at most max_frames of them (0: all)."""
+    names = sorted(f for f in os.listdir(frames_dir) if f.endswith(".jpg"))
+    return names[:max_frames] if max_frames > 0 else names
+
+
+def read_frames(frames_dir, names):
+    """Yields the frames one by one, each read when it is asked for (never the whole sequence)."""
+    for name in names:
+        path = os.path.join(frames_dir, name)
+        frame = cv2.imread(path, cv2.IMREAD_COLOR)
+        if frame is None:
+            raise RuntimeError(f"{path}: cannot read the image")
+        yield frame
 
 
 def read_polygon(line):
@@ -44,6 +59,12 @@ def to_image_msg(frame, stamp, seq):
 
 
 def main():
+    # ROS is needed to play, not to list or read the frames (play_dataset_test.py).
+    import rospy
+    from geometry_msgs.msg import Point32, PolygonStamped
+    from sensor_msgs.msg import Image
+    from std_msgs.msg import String
+
     parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     parser.add_argument("--dataset", required=True)
     parser.add_argument("--sequence", required=True)
@@ -51,19 +72,26 @@ def main():
     parser.add_argument("--image", default="/camera/image_raw", help="the topic the node reads")
     parser.add_argument("--rate", type=float, default=30.0, help="frames per second; 0: lock-step")
     parser.add_argument("--out", default="ros-results", help="folder for <Seq>.txt")
+    parser.add_argument("--max-frames", type=int, default=0,
+                        help="play only the first N frames (0: all)")
     args = parser.parse_args()
+    if args.max_frames < 0:
+        parser.error(f"--max-frames must be >= 0, got {args.max_frames}")
 
     frames_dir = os.path.join(args.dataset, "OriginalVideosAVI", args.sequence)
     truth_file = os.path.join(args.dataset, "GroundTruthByPolygons",
                               args.sequence + "_TrackingGroundTruth.txt")
-    names = sorted(f for f in os.listdir(frames_dir) if f.endswith(".jpg"))
+    names = frame_names(frames_dir, args.max_frames)
+    if not names:
+        sys.exit(f"{frames_dir}: no NNNN.jpg frames")
     with open(truth_file) as f:
-        init = read_polygon(f.readline())
+        init = read_polygon(f.readline(1 << 20))
     print(f"{args.sequence}: {len(names)} frames", file=sys.stderr)
-    frames = [cv2.imread(os.path.join(frames_dir, n), cv2.IMREAD_COLOR) for n in names]
+    frames = read_frames(frames_dir, names)
+    first_frame = next(frames)
 
     rospy.init_node("scbt_dataset_player", anonymous=True, disable_signals=True)
-    image_pub = rospy.Publisher(args.image, Image, queue_size=len(frames))
+    image_pub = rospy.Publisher(args.image, Image, queue_size=len(names))
     init_pub = rospy.Publisher(args.node + "/init", PolygonStamped, queue_size=1, latch=True)
     lock = threading.Condition()
     boundaries = {}  # stamp (ns) -> polygon
@@ -103,11 +131,11 @@ def main():
     # The init and the first frame travel on different connections: the first frame is sent
     # (same stamp) until the node reports it initialised on it.
     t0 = rospy.Time(1000)
-    stamps = [t0 + rospy.Duration.from_sec(k / (args.rate or 30.0)) for k in range(len(frames))]
+    stamps = [t0 + rospy.Duration.from_sec(k / (args.rate or 30.0)) for k in range(len(names))]
     for attempt in range(50):
         with lock:
             events.clear()
-        image_pub.publish(to_image_msg(frames[0], stamps[0], 0))
+        image_pub.publish(to_image_msg(first_frame, stamps[0], 0))
         with lock:
             lock.wait_for(lambda: events, timeout=5)
             if events and events[0] == "initialised":
@@ -116,10 +144,10 @@ def main():
         sys.exit("the node never reported initialised")
 
     start = time.time()
-    for k in range(1, len(frames)):
+    for k, frame in enumerate(frames, start=1):
         if args.rate > 0:
             time.sleep(max(0.0, start + k / args.rate - time.time()))
-        image_pub.publish(to_image_msg(frames[k], stamps[k], k))
+        image_pub.publish(to_image_msg(frame, stamps[k], k))
         if args.rate == 0:
             with lock:
                 if not lock.wait_for(lambda: stamps[k].to_nsec() in boundaries, timeout=10):
@@ -147,8 +175,8 @@ def main():
         counts = {s: sum(1 for t, _ in tracker_states if t == s)
                   for s in ("tracking", "uncertain", "lost")}
         confidences = sorted(c for _, c in tracker_states)
-    print(f"{args.sequence}: sent {len(frames)} frames in {elapsed:.2f} s "
-          f"({(len(frames) - 1) / elapsed:.1f} fps), {received} boundaries received, node "
+    print(f"{args.sequence}: sent {len(names)} frames in {elapsed:.2f} s "
+          f"({(len(names) - 1) / max(elapsed, 1e-9):.1f} fps), {received} boundaries received, node "
           f"dropped {state.get('dropped_frames')} and missed {state.get('missed_frames')}; "
           f"wrote {path}", file=sys.stderr)
     if totals:

@@ -15,6 +15,7 @@
 #include "scbt/eval/alignment_error.h"
 #include "scbt/geometry/polygon_io.h"
 #include "scbt/io/atomic_file.h"
+#include "scbt/io/bounded_read.h"
 #include "scbt/io/frame_source.h"
 #include "scbt/peers/polygon_tracker.h"
 
@@ -32,7 +33,8 @@ std::string join(const std::vector<std::string>& items, const char* separator) {
 }
 
 std::vector<Polygon> load_truth(const DatasetSequence& sequence, int max_frames) {
-  const std::vector<std::string> lines = read_text_lines(sequence.ground_truth);
+  const std::vector<std::string> lines =
+      read_text_lines(sequence.ground_truth, kMaxTextFileBytes, "a ground-truth file");
   std::vector<Polygon> truth;
   for (size_t i = 0; i < lines.size(); ++i) {
     if (max_frames > 0 && static_cast<int>(truth.size()) >= max_frames) break;
@@ -346,7 +348,7 @@ void run_score_job(const EvalJob& job, const EvalRunOptions& options, Progress* 
     progress->frames_done += static_cast<long>(seq.truth.size());
     return;
   }
-  std::vector<std::string> lines = read_text_lines(path);
+  std::vector<std::string> lines = read_text_lines(path, kMaxTextFileBytes, "a results file");
   if (options.max_frames > 0 && static_cast<int>(lines.size()) > options.max_frames) {
     lines.resize(options.max_frames);
   }

@@ -8,6 +8,8 @@
 
 #include "scbt/app/eval_jobs.h"
 #include "scbt/app/eval_outputs.h"
+#include "scbt/io/printable.h"
+#include "scbt/io/same_file.h"
 #include "scbt/peers/polygon_tracker.h"
 
 namespace scbt {
@@ -38,6 +40,48 @@ std::vector<std::pair<std::string, std::string>> checked_results(
     }
   }
   return results;
+}
+
+// Is `path` `folder` itself or inside it (both resolved: symlinks, "..")?
+bool is_within(const fs::path& path, const fs::path& folder) {
+  const fs::path p = fs::weakly_canonical(fs::absolute(path));
+  const fs::path f = fs::weakly_canonical(fs::absolute(folder));
+  auto pi = p.begin();
+  for (auto fi = f.begin(); fi != f.end(); ++fi, ++pi) {
+    if (fi->empty()) continue;  // a trailing separator
+    if (pi == p.end() || *pi != *fi) return false;
+  }
+  return true;
+}
+
+// Refuses, before any work, an output folder inside the dataset and results written over the
+// results or ground truth being scored (--results mine=OUT/bdsp --trackers bdsp --out OUT).
+void check_eval_paths(const EvalRunOptions& options, const EvalRunContext& run) {
+  if (is_within(options.out, options.dataset)) {
+    throw std::invalid_argument("--out " + printable(options.out) + " is inside --dataset " +
+                                printable(options.dataset) + "; refusing to write into it");
+  }
+  std::vector<NamedPath> inputs;
+  std::vector<NamedPath> outputs;
+  for (const EvalSequence& s : run.sequences) {
+    inputs.push_back({"--dataset", s.files.ground_truth});
+    for (const auto& [name, dir] : run.results) {
+      inputs.push_back({"--results " + name + "=", results_path(dir, s.files.name)});
+    }
+    for (const std::string& tracker : run.trackers) {
+      outputs.push_back(
+          {"--out", results_path((fs::path(options.out) / tracker).string(), s.files.name)});
+    }
+  }
+  // "--results NAME= PATH" reads oddly: the option and the path are joined.
+  try {
+    check_no_overwrite(inputs, outputs, {});
+  } catch (const std::invalid_argument& e) {
+    std::string message = e.what();
+    const std::size_t joined = message.find("= ");
+    if (joined != std::string::npos) message.erase(joined + 1, 1);
+    throw std::invalid_argument(message);
+  }
 }
 
 void log_start(const EvalRunContext& run, std::ostream& log) {
@@ -126,6 +170,8 @@ EvalRunSummary run_eval(const EvalRunOptions& options, std::ostream& log) {
   for (const auto& [name, dir] : run.results) {
     for (const EvalSequence& s : run.sequences) run.jobs.push_back({name, dir, &s});
   }
+
+  check_eval_paths(options, run);
 
   fs::create_directories(options.out);
   const int hardware = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));

@@ -20,6 +20,12 @@ namespace fs = std::filesystem;
 
 std::vector<std::string> lines_of(const fs::path& path) { return read_text_lines(path.string()); }
 
+std::string cli_text(const fs::path& path) {
+  std::stringstream text;
+  text << std::ifstream(path, std::ios::binary).rdbuf();
+  return text.str();
+}
+
 const SequenceScore* find_score(const std::vector<SequenceScore>& scores,
                                 const std::string& tracker, const std::string& sequence) {
   for (const SequenceScore& s : scores) {
@@ -177,6 +183,62 @@ TEST_F(EvalRunTest, RejectsBadInputBeforeRunning) {
   bad.out.clear();
   EXPECT_THROW(run_eval(bad, std::cerr), std::invalid_argument);
   EXPECT_FALSE(fs::exists(options_.out)) << "nothing written by a rejected run";
+}
+
+std::string eval_error(const EvalRunOptions& options) {
+  try {
+    run_eval(options, std::cerr);
+  } catch (const std::invalid_argument& e) {
+    return e.what();
+  }
+  return "(not refused)";
+}
+
+// The results being scored are never overwritten by the trackers being run: refused before any
+// work, both paths named.
+TEST_F(EvalRunTest, RefusesToOverwriteTheResultsItScores) {
+  options_.trackers = {"static"};
+  run_eval(options_, std::cerr);
+  const fs::path scored = fs::path(options_.out) / "static" / "Slide.txt";
+  const std::string before = cli_text(scored);
+  EvalRunOptions again = options_;
+  again.results = {"mine=" + (fs::path(options_.out) / "static").string()};
+  const std::string message = eval_error(again);
+  EXPECT_NE(message.find("--out " + scored.string() +
+                         " is the same file as --results mine=" + scored.string()),
+            std::string::npos)
+      << message;
+  EXPECT_EQ(cli_text(scored), before);
+}
+
+TEST_F(EvalRunTest, RefusesAnOutputFolderInsideTheDataset) {
+  options_.trackers = {"static"};
+  options_.out = (root_ / "data" / "GroundTruthByPolygons" / "..").string();
+  EXPECT_NE(eval_error(options_).find("is inside --dataset"), std::string::npos);
+  options_.out = (root_ / "data" / "results").string();
+  EXPECT_NE(eval_error(options_).find("--out " + options_.out + " is inside --dataset " +
+                                      options_.dataset + "; refusing to write into it"),
+            std::string::npos)
+      << eval_error(options_);
+  EXPECT_FALSE(fs::exists(options_.out));
+}
+
+// Results files are read with a limit: an endless one (a link to /dev/zero) fails its job with
+// the limit named, instead of filling the memory.
+TEST_F(EvalRunTest, AnEndlessResultsFileHitsTheLimit) {
+  const fs::path dir = root_ / "endless";
+  fs::create_directories(dir);
+  fs::create_symlink("/dev/zero", dir / "Slide.txt");
+  options_.results = {"endless=" + dir.string()};
+  options_.sequences = {"Slide"};
+  try {
+    run_eval(options_, std::cerr);
+    FAIL() << "not refused";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find("larger than 256 MiB, the limit for a results file"),
+              std::string::npos)
+        << e.what();
+  }
 }
 
 TEST_F(EvalRunTest, AFailedJobLeavesNoResultsButTheOthersAreReported) {

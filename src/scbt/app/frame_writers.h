@@ -97,6 +97,7 @@ class ProgressWriter : public FrameWriter {
       : bar_(log, label, total, enabled), every_(every) {}
   void write(const TrackedFrame& frame) override;
   void finish() { bar_.finish(frames_); }
+  void break_line() { bar_.break_line(); }
 
  private:
   ProgressBar bar_;

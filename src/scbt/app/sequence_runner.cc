@@ -5,6 +5,8 @@
 #include <chrono>
 #include <stdexcept>
 
+#include "scbt/io/bounded_read.h"
+
 namespace scbt {
 namespace {
 
@@ -63,6 +65,8 @@ const cv::Mat& SequenceRunner::read_first(const std::string& input) {
   for (int skipped = 0; skipped < start - 1; ++skipped) {
     try {
       if (!source_->read(&frame_)) throw beyond(skipped);
+    } catch (const Interrupted&) {
+      throw;
     } catch (const std::runtime_error&) {
       // undecodable, but not tracked
     }
@@ -109,6 +113,8 @@ bool SequenceRunner::step() {
     r = tracker_->track(frame_);
     if (options_.measure_cpu) f.cpu_ms = thread_cpu_ms() - cpu_start;
     f.wall_ms = std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+  } catch (const Interrupted&) {
+    return false;  // a stop signal came while the frame was read: the run ends before it
   } catch (const std::runtime_error& e) {
     if (options_.on_bad_frame == BadFramePolicy::kRaise) throw;
     f.bad = e.what();

@@ -6,7 +6,8 @@
 
 namespace scbt {
 
-// Installs a handler for SIGINT, SIGTERM and SIGHUP (a closed terminal) for its lifetime and
+// Installs a handler for SIGINT, SIGTERM and SIGHUP (a closed terminal) for its lifetime -- each
+// unless the process ignores it already (nohup, a background job), which stays ignored -- and
 // ignores SIGPIPE, so that a reader of standard output going away shows as EPIPE
 // (OutputSet::reader_gone) and ends the run cleanly; then restores the old handlers. Disabled,
 // it installs nothing and stop_signal() stays 0.
@@ -17,7 +18,8 @@ class StopSignalScope {
   StopSignalScope(const StopSignalScope&) = delete;
   StopSignalScope& operator=(const StopSignalScope&) = delete;
 
-  // The signal received since the scope began, else 0.
+  // The signal received since the scope began, else 0. A handled signal also stops any bounded
+  // read in progress (scbt/io/bounded_read.h: request_stop).
   int stop_signal() const;
 
  private:

@@ -1,5 +1,6 @@
 #include "scbt/app/track_depth.h"
 
+#include <cstdio>
 #include <filesystem>
 #include <stdexcept>
 
@@ -36,6 +37,18 @@ void TrackDepthOptions::check() const {
     lift.check();
   } catch (const std::invalid_argument& e) {
     throw std::invalid_argument("--depth-scale: " + std::string(e.what()));
+  }
+  // A 16-bit depth image holds 1..65535 units (0: no depth): at least some of them must be a
+  // valid depth, or every frame would be lifted from nothing.
+  const double nearest = 1.0 * lift.depth_scale;
+  const double farthest = 65535.0 * lift.depth_scale;
+  if (nearest > lift.max_depth || farthest < lift.min_depth) {
+    char text[320];
+    std::snprintf(text, sizeof(text),
+                  "--depth-scale %g: a 16-bit depth image's values 1..65535 would be %g..%g m, "
+                  "none of them within the valid depths %g..%g m (e.g. 0.001 for millimetres)",
+                  lift.depth_scale, nearest, farthest, lift.min_depth, lift.max_depth);
+    throw std::invalid_argument(text);
   }
 }
 

@@ -50,7 +50,7 @@ std::string frame_caption(int frame_number, const TrackResult& r) {
 
 TrackOutputs::TrackOutputs(const TrackRunOptions& options, double fps, const Tracker* tracker)
     : tracker_(tracker) {
-  results_ = &set_.add_file(options.output);
+  if (!options.output.empty()) results_ = &set_.add_file(options.output);
   if (!options.csv.empty()) csv_ = &set_.add_file(options.csv);
   if (!options.video.empty()) video_ = &set_.add_video(options.video, fps);
   if (!options.frames_out.empty()) frames_out_ = &set_.add_frame_folder(options.frames_out);
@@ -61,7 +61,7 @@ void TrackOutputs::write(const TrackedFrame& frame) {
   const TrackResult& r = *frame.result;
   const int number = frame.number;
   if (csv_ && frame.initial) write_csv_header(csv_->stream());
-  results_->stream() << format_polygon_line(r.boundary) << '\n';
+  if (results_) results_->stream() << format_polygon_line(r.boundary) << '\n';
   if (csv_ && !frame.initial) {
     write_csv_row(
         csv_->stream(), number, r,
@@ -89,7 +89,8 @@ void TrackOutputs::write_image(cv::Mat image, int frame_number) {
 void check_track_paths(const TrackRunOptions& options) {
   std::vector<NamedPath> inputs = {{"INPUT", options.input}};
   if (!options.init_file.empty()) inputs.push_back({"--init", options.init_file});
-  std::vector<NamedPath> outputs = {{"-o", options.output}};
+  std::vector<NamedPath> outputs;
+  if (!options.output.empty()) outputs.push_back({"-o", options.output});
   if (!options.csv.empty()) outputs.push_back({"--csv", options.csv});
   if (!options.video.empty()) outputs.push_back({"--video", options.video});
   std::vector<NamedPath> output_folders;

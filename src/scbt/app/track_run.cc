@@ -1,6 +1,8 @@
 #include "scbt/app/track_run.h"
 
+#include <cerrno>
 #include <csignal>
+#include <cstdlib>
 #include <memory>
 #include <stdexcept>
 
@@ -9,6 +11,7 @@
 #include "scbt/app/track_outputs.h"
 #include "scbt/geometry/polygon_io.h"
 #include "scbt/io/frame_source.h"
+#include "scbt/io/printable.h"
 #include "scbt/io/same_file.h"
 #include "scbt/peers/polygon_tracker.h"
 
@@ -29,19 +32,70 @@ Polygon load_initial_polygon(const TrackRunOptions& options) {
   }
 }
 
+InitialPolygon choose_initial_polygon(const TrackRunOptions& options, int input_frames) {
+  InitialPolygon chosen;
+  if (options.init_file.empty()) {
+    chosen.polygon = load_initial_polygon(options);
+    chosen.source = "--init-points";
+  } else {
+    std::vector<std::string> lines = read_polygon_lines(options.init_file);
+    // Trailing blank lines (an editor's final newline) are not polygons.
+    while (lines.size() > 1 && lines.back().find_first_not_of(" \t") == std::string::npos) {
+      lines.pop_back();
+    }
+    const int count = static_cast<int>(lines.size());
+    const int start = options.start_frame;
+    if (count > 1 && count == input_frames && start <= count) {
+      chosen.line = start;  // one polygon per frame, as a ground-truth file: frame N's own
+    } else if (count > 1 && start > 1) {
+      chosen.warning = printable(options.init_file) + " has " + std::to_string(count) +
+                       " lines, not one per frame of " + printable(options.input) + " (" +
+                       (input_frames > 0 ? std::to_string(input_frames) : "unknown") +
+                       " frames): its first line is the boundary on frame " + std::to_string(start);
+    }
+    chosen.source = printable(options.init_file) + ":" + std::to_string(chosen.line);
+    std::string error;
+    if (!try_parse_polygon_line(lines[chosen.line - 1], &chosen.polygon, &error)) {
+      throw std::runtime_error(chosen.source + ": " + error);
+    }
+  }
+  chosen.dropped = drop_repeated_vertices(&chosen.polygon);
+  return chosen;
+}
+
 cv::Rect parse_init_box(const std::string& text) {
-  int values[4];
-  char end = 0;
-  const int read = std::sscanf(text.c_str(), "%d , %d , %d , %d %c", &values[0], &values[1],
-                               &values[2], &values[3], &end);
-  if (read != 4) {
-    throw std::invalid_argument("--init-box must be four integers x,y,w,h (pixels), got '" + text +
-                                "'");
+  const auto malformed = [&] {
+    return std::invalid_argument("--init-box must be four integers x,y,w,h (pixels), got '" +
+                                 printable(text) + "'");
+  };
+  // Each value as given, whole, in the range of a pixel coordinate: never wrapped or cut.
+  long long values[4];
+  std::size_t at = 0;
+  for (int i = 0; i < 4; ++i) {
+    const std::size_t comma = i < 3 ? text.find(',', at) : text.size();
+    if (comma == std::string::npos) throw malformed();
+    std::string token = text.substr(at, comma - at);
+    token.erase(0, token.find_first_not_of(" \t"));
+    token.erase(token.find_last_not_of(" \t") + 1);
+    at = comma + 1;
+    if (token.empty()) throw malformed();
+    errno = 0;
+    char* end = nullptr;
+    values[i] = std::strtoll(token.c_str(), &end, 10);
+    if (end != token.c_str() + token.size()) throw malformed();
+    constexpr long long kLimit = 1000000;  // beyond any frame scbt can track
+    if (errno == ERANGE || values[i] < -kLimit || values[i] > kLimit) {
+      throw std::invalid_argument("--init-box: " + std::string("xywh").substr(i, 1) + " = " +
+                                  printable(token) + " is out of range (at most " +
+                                  std::to_string(kLimit) + " in magnitude)");
+    }
   }
   if (values[2] <= 0 || values[3] <= 0) {
-    throw std::invalid_argument("--init-box: the box " + text + " is empty (w and h must be > 0)");
+    throw std::invalid_argument("--init-box: the box " + printable(text) +
+                                " is empty (w and h must be > 0)");
   }
-  return cv::Rect(values[0], values[1], values[2], values[3]);
+  return cv::Rect(static_cast<int>(values[0]), static_cast<int>(values[1]),
+                  static_cast<int>(values[2]), static_cast<int>(values[3]));
 }
 
 namespace {
@@ -49,9 +103,9 @@ namespace {
 // Initialises the tracker on the first frame from --init / --init-points (`polygon`) or from
 // --init-box; returns the initial boundary. Errors name where the boundary came from: a file's
 // content (std::runtime_error, exit 1) or the command line (std::invalid_argument, exit 2).
-Polygon initialise(Tracker* tracker, const cv::Mat& frame, const Polygon& polygon,
+Polygon initialise(Tracker* tracker, const cv::Mat& frame, const InitialPolygon& polygon,
                    const TrackRunOptions& options, const std::string& frame_name) {
-  const std::string where = " (first frame " + frame_name + ")";
+  const std::string where = " (first frame " + printable(frame_name) + ")";
   if (!options.init_box.empty()) {
     const cv::Rect box = parse_init_box(options.init_box);
     try {
@@ -63,17 +117,21 @@ Polygon initialise(Tracker* tracker, const cv::Mat& frame, const Polygon& polygo
     }
   }
   try {
-    tracker->init(frame, polygon);
+    tracker->init(frame, polygon.polygon);
   } catch (const std::invalid_argument& e) {
     const std::string detail = std::string("initial polygon: ") + e.what() + where;
-    if (!options.init_file.empty()) throw std::runtime_error(options.init_file + ":1: " + detail);
+    if (!options.init_file.empty()) throw std::runtime_error(polygon.source + ": " + detail);
     throw std::invalid_argument("--init-points: " + detail);
   }
-  return polygon;
+  return polygon.polygon;
 }
 
 void check_track_options(const TrackRunOptions& options) {
-  if (options.output.empty()) throw std::invalid_argument("--output is required");
+  if (options.output.empty() && options.csv.empty() && options.video.empty() &&
+      options.frames_out.empty() && !options.depth.enabled()) {
+    throw std::invalid_argument(
+        "nothing to write: give -o/--output, --csv, --video, --frames-out or --points3d");
+  }
   if (options.max_frames < 0) {
     throw std::invalid_argument("--max-frames must be >= 0, got " +
                                 std::to_string(options.max_frames));
@@ -94,17 +152,17 @@ void check_track_options(const TrackRunOptions& options) {
 // A bad frame held (BadFramePolicy::kHold) is reported at once, even when quiet.
 class BadFrameWarnings : public FrameWriter {
  public:
-  BadFrameWarnings(std::ostream& log, bool quiet) : log_(log), quiet_(quiet) {}
+  BadFrameWarnings(std::ostream& log, ProgressWriter* progress) : log_(log), progress_(progress) {}
   void write(const TrackedFrame& frame) override {
     if (frame.bad.empty()) return;
-    if (!quiet_) log_ << '\n';  // ends the progress bar's line
+    progress_->break_line();
     log_ << "scbt: warning: " << printable(frame.bad) << " (frame " << frame.number
          << "); boundary held\n";
   }
 
  private:
   std::ostream& log_;
-  bool quiet_;
+  ProgressWriter* progress_;
 };
 
 TrackSummary summarise(const RunStatistics& stats, int start_frame, int expected_frames) {
@@ -139,7 +197,12 @@ void report_end(const TrackRunOptions& options, std::ostream& log, TrackSummary*
     if (summary->expected_frames > 0) {
       log << " of " << summary->start_frame + summary->expected_frames - 1;
     }
-    log << "; " << printable(options.output) << " holds " << held_frames << "\n";
+    const std::string& first_output = !options.output.empty()   ? options.output
+                                      : !options.csv.empty()    ? options.csv
+                                      : options.depth.enabled() ? options.depth.points3d
+                                      : !options.video.empty()  ? options.video
+                                                                : options.frames_out;
+    log << "; " << printable(first_output) << " holds " << held_frames << "\n";
   }
   if (summary->bad_frames > 0) {
     log << "scbt: warning: " << summary->bad_frames << " bad frame(s) reported and held\n";
@@ -160,17 +223,33 @@ void report_end(const TrackRunOptions& options, std::ostream& log, TrackSummary*
 TrackSummary run_track(const TrackRunOptions& options, std::ostream& log) {
   check_track_options(options);
   check_track_paths(options);
-  const Polygon polygon = options.init_box.empty() ? load_initial_polygon(options) : Polygon{};
+  // Read (bounded) before the input is opened, parsed once its frame count is known.
+  if (!options.init_file.empty()) read_polygon_lines(options.init_file);
+  if (!options.init_points.empty()) load_initial_polygon(options);
   BdspPolygonTracker bdsp{Tracker(options.tracker)};
   const StopSignalScope signals(options.handle_signals);
   std::unique_ptr<FrameSource> source = open_colour_source(options.input, options.depth);
+  InitialPolygon polygon;
+  if (options.init_box.empty()) {
+    polygon = choose_initial_polygon(options, source->frame_count());
+    if (!polygon.warning.empty()) log << "scbt: warning: " << polygon.warning << "\n";
+    if (polygon.dropped > 0) {
+      log << "scbt: note: " << polygon.source << ": " << polygon.dropped
+          << " repeated vertex(es) dropped from the initial polygon\n";
+    }
+  }
   TrackOutputs out(options, source->fps(), &bdsp.tracker());
   const int expected =
       source->frame_count() > 0 ? source->frame_count() - (options.start_frame - 1) : -1;
 
-  BadFrameWarnings warnings(log, options.quiet);
+  // The frames that will run: to the end of the input, or --max-frames of them.
+  int will_run = expected;
+  if (options.max_frames > 0 && (will_run <= 0 || will_run > options.max_frames)) {
+    will_run = options.max_frames;
+  }
+  ProgressWriter progress(log, "tracking", will_run, !options.quiet);
+  BadFrameWarnings warnings(log, &progress);
   RunStatistics stats;
-  ProgressWriter progress(log, "tracking", expected, !options.quiet);
   SequenceRunOptions run_options;
   run_options.start_frame = options.start_frame;
   run_options.max_frames = options.max_frames;

@@ -54,11 +54,29 @@ struct TrackSummary {
 // init_box). Throws std::runtime_error / std::invalid_argument with a message naming the source.
 Polygon load_initial_polygon(const TrackRunOptions& options);
 
-// Parses --init-box "x,y,w,h" (integers, w and h positive). Throws std::invalid_argument.
+// The initial boundary of a run, and where it came from.
+struct InitialPolygon {
+  Polygon polygon;
+  std::string source;   // "--init-points" or "FILE:LINE"
+  int line = 1;         // the line of --init FILE used
+  int dropped = 0;      // consecutive repeated vertices dropped
+  std::string warning;  // why line 1 is used although the start frame is later
+};
+
+// The initial boundary for the start frame. From --init FILE: line N for --start-frame N when the
+// file holds one polygon per frame of the input (its line count is the input's frame count, as
+// for a ground-truth file), else line 1 (with a warning when N > 1 and the file has more lines).
+// A vertex repeating the one before it (or the last repeating the first) is dropped: ground-truth
+// files have them. Throws as load_initial_polygon.
+InitialPolygon choose_initial_polygon(const TrackRunOptions& options, int input_frames);
+
+// Parses --init-box "x,y,w,h": integers within +-1,000,000, w and h positive. Throws
+// std::invalid_argument naming the value as given.
 cv::Rect parse_init_box(const std::string& text);
 
 // Runs the whole job. Progress and the summary go to `log` unless quiet; bad frames and an
-// interruption are reported on `log` as one "scbt: warning: ..." line each even when quiet.
+// interruption are reported on `log` as one "scbt: warning: ..." line each even when quiet, as
+// are vertices dropped from the initial polygon ("scbt: note: ...").
 // Throws on bad input; no output file is left behind (and no existing one replaced) by a failed
 // run. Interrupted by a signal, it commits complete outputs for the frames tracked so far and
 // returns with stop_signal set.

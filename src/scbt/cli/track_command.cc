@@ -39,7 +39,8 @@ void add_depth_options(CLI::App* command, TrackDepthOptions* depth) {
       ->group(group);
   command
       ->add_option("--depth-scale", depth->lift.depth_scale,
-                   "Metres per depth unit (TUM RGB-D: 0.0002)")
+                   "Metres per depth unit (TUM RGB-D: 0.0002); refused when no 16-bit value "
+                   "1..65535 would be a valid depth (0.1..10 m)")
       ->capture_default_str()
       ->group(group);
   command
@@ -64,22 +65,26 @@ void add_track_command(CLI::App& app, int* exit_code) {
   command->add_option("INPUT", options->input,
                       "Video file, folder of numbered images, or camera index (or --camera N)");
   command->add_option("--init", options->init_file,
-                      "Polygon file whose first line is the initial boundary: n x1 y1 ... xn yn");
+                      "Polygon file whose first line is the initial boundary: n x1 y1 ... xn yn; "
+                      "with one line per frame of INPUT (a ground-truth file), line N is the "
+                      "boundary on --start-frame N");
   command->add_option("--init-points", options->init_points,
                       "Initial boundary inline: \"x1,y1 x2,y2 ...\"");
   command->add_option("--init-box", options->init_box,
-                      "Initial box x,y,w,h (pixels) instead of a polygon: the most salient closed "
-                      "boundary inside it is tracked (not with --init/--init-points)");
+                      "Initial box x,y,w,h (integer pixels, each within +-1000000; w, h > 0) "
+                      "instead of a polygon: the most salient closed boundary inside it is "
+                      "tracked (not with --init/--init-points)");
   command
       ->add_option("--start-frame", options->start_frame,
                    "Track from frame N, counted from 1 = the first frame of INPUT (whatever "
-                   "number its file name carries); the initial boundary is on frame N and the "
+                   "number its file name carries); the initial boundary is on frame N (line N "
+                   "of an --init file with one line per frame, else its first line) and the "
                    "results hold one line per frame from N; an error if INPUT has fewer frames")
       ->capture_default_str();
   command->add_option(
       "-o,--output", options->output,
-      "Results file: one polygon line per frame from --start-frame on (required unless "
-      "--interactive/--camera)");
+      "Results file: one polygon line per frame from --start-frame on (a run needs at least "
+      "one of -o, --csv, --video, --frames-out, --points3d, unless --interactive/--camera)");
   command->add_option("--csv", options->csv,
                       "Per-frame CSV: frame, held, state (tracking/uncertain/lost), confidence "
                       "(0-1), statistics, timings and a note (docs/loss-handling.md)");
@@ -93,7 +98,9 @@ void add_track_command(CLI::App& app, int* exit_code) {
                    "A frame that cannot be decoded or changes size: hold (report it, keep the "
                    "boundary, go on; exit code 3) or stop (fail)")
       ->check(CLI::IsMember({"hold", "stop"}));
-  command->add_flag("-q,--quiet", options->quiet, "No progress bar and no summary");
+  command->add_flag("-q,--quiet", options->quiet,
+                    "No progress and no summary (progress: a bar on a terminal, else a line at "
+                    "every tenth of the frames that will run)");
   add_depth_options(command, &options->depth);
   auto flags = add_tracker_options(command);
   auto live = add_live_options(command);

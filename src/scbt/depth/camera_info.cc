@@ -1,9 +1,10 @@
 #include "scbt/depth/camera_info.h"
 
-#include <fstream>
-#include <iterator>
 #include <opencv2/core.hpp>
 #include <stdexcept>
+
+#include "scbt/io/bounded_read.h"
+#include "scbt/io/printable.h"
 
 namespace scbt {
 namespace {
@@ -42,11 +43,14 @@ cv::FileNode first_present(const cv::FileStorage& storage, std::initializer_list
 
 }  // namespace
 
-PinholeIntrinsics read_camera_info(const std::string& path) {
-  std::ifstream file(path, std::ios::binary);
-  if (!file) throw std::runtime_error(path + ": cannot open camera info file");
-  std::string text((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
-  if (text.size() > (1u << 20)) throw std::runtime_error(path + ": camera info file over 1 MB");
+PinholeIntrinsics read_camera_info(const std::string& path) { return read_camera_info(path, {}); }
+
+PinholeIntrinsics read_camera_info(const std::string& path,
+                                   const std::function<void()>& check_interrupt) {
+  // Bounded and interruptible: the file may be endless (/dev/zero) or a FIFO.
+  std::string text =
+      read_file_bounded(path, {kMaxCameraInfoBytes, "a camera info file"}, check_interrupt);
+  const std::string shown = printable(path);
   // ROS writes YAML without the "%YAML:1.0" line OpenCV's parser needs to recognise it.
   const std::size_t start = text.find_first_not_of(" \t\r\n");
   if (start != std::string::npos && text[start] != '%' && text[start] != '<' && text[start] != '{')
@@ -55,25 +59,25 @@ PinholeIntrinsics read_camera_info(const std::string& path) {
   try {
     storage.open(text, cv::FileStorage::READ | cv::FileStorage::MEMORY);
   } catch (const cv::Exception& e) {
-    throw std::runtime_error(path + ": not a YAML/XML/JSON camera info file (" + e.msg + ")");
+    throw std::runtime_error(shown + ": not a YAML/XML/JSON camera info file (" + e.msg + ")");
   }
   if (!storage.isOpened())
-    throw std::runtime_error(path + ": not a YAML/XML/JSON camera info file");
+    throw std::runtime_error(shown + ": not a YAML/XML/JSON camera info file");
   const cv::FileNode model = storage["distortion_model"];
   if (model.isString()) {
     const std::string name = model.string();
     if (name != "plumb_bob" && name != "rational_polynomial")
-      throw std::runtime_error(path + ": distortion_model '" + name +
+      throw std::runtime_error(shown + ": distortion_model '" + printable(name) +
                                "' is not supported (plumb_bob or rational_polynomial)");
   }
   std::string key;
   const cv::FileNode k_node =
       first_present(storage, {"camera_matrix", "cameraMatrix", "K", "k"}, &key);
   if (k_node.empty())
-    throw std::runtime_error(path + ": no camera_matrix (or cameraMatrix, K) entry");
+    throw std::runtime_error(shown + ": no camera_matrix (or cameraMatrix, K) entry");
   const std::vector<double> k = matrix_values(k_node);
   if (k.size() != 9)
-    throw std::runtime_error(path + ": " + key + " must hold 9 numbers (3x3), got " +
+    throw std::runtime_error(shown + ": " + key + " must hold 9 numbers (3x3), got " +
                              std::to_string(k.size()));
   PinholeIntrinsics camera;
   camera.fx = k[0];
@@ -86,7 +90,7 @@ PinholeIntrinsics read_camera_info(const std::string& path) {
   try {
     camera.check();
   } catch (const std::invalid_argument& e) {
-    throw std::runtime_error(path + ": " + e.what());
+    throw std::runtime_error(shown + ": " + e.what());
   }
   return camera;
 }

@@ -5,9 +5,11 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
-#include <fstream>
 #include <sstream>
 #include <stdexcept>
+
+#include "scbt/io/bounded_read.h"
+#include "scbt/io/printable.h"
 
 namespace scbt {
 namespace {
@@ -28,6 +30,28 @@ bool parse_double(const std::string& token, double* value) {
 
 bool starts_with_byte_order_mark(const std::string& text) {
   return text.size() >= 3 && text.compare(0, 3, "\xEF\xBB\xBF") == 0;
+}
+
+// True when every vertex lies on the line through the first one and the one farthest from it
+// (to within a millionth of that distance).
+bool all_on_one_line(const Polygon& polygon) {
+  const Point& first = polygon.front();
+  Point far = first;
+  double far_sq = 0.0;
+  for (const Point& p : polygon) {
+    const double d = (p.x - first.x) * (p.x - first.x) + (p.y - first.y) * (p.y - first.y);
+    if (d > far_sq) {
+      far_sq = d;
+      far = p;
+    }
+  }
+  if (far_sq == 0.0) return true;
+  const double length = std::sqrt(far_sq);
+  for (const Point& p : polygon) {
+    const double cross = (far.x - first.x) * (p.y - first.y) - (far.y - first.y) * (p.x - first.x);
+    if (std::abs(cross) / length > 1e-6 * length) return false;
+  }
+  return true;
 }
 
 std::vector<std::string> split_whitespace(const std::string& line) {
@@ -56,14 +80,14 @@ bool try_parse_polygon_line(const std::string& line, Polygon* polygon, std::stri
   errno = 0;
   const long count = std::strtol(tokens[0].c_str(), &end, 10);
   if (end != tokens[0].c_str() + tokens[0].size() || errno == ERANGE) {
-    return fail("vertex count '" + tokens[0] + "' is not an integer");
+    return fail("vertex count '" + printable(tokens[0]) + "' is not an integer");
   }
   if (count < 0 || count > kMaxVertices) {
-    return fail("vertex count " + tokens[0] + " out of range");
+    return fail("vertex count " + printable(tokens[0]) + " out of range");
   }
   const size_t expected = 1 + 2 * static_cast<size_t>(count);
   if (tokens.size() != expected) {
-    return fail("vertex count " + tokens[0] + " needs " + std::to_string(2 * count) +
+    return fail("vertex count " + printable(tokens[0]) + " needs " + std::to_string(2 * count) +
                 " coordinates, found " + std::to_string(tokens.size() - 1));
   }
   Polygon result;
@@ -72,11 +96,11 @@ bool try_parse_polygon_line(const std::string& line, Polygon* polygon, std::stri
     double x = 0, y = 0;
     const std::string& tx = tokens[1 + 2 * i];
     const std::string& ty = tokens[2 + 2 * i];
-    if (!parse_double(tx, &x)) return fail("coordinate '" + tx + "' is not a number");
-    if (!parse_double(ty, &y)) return fail("coordinate '" + ty + "' is not a number");
+    if (!parse_double(tx, &x)) return fail("coordinate '" + printable(tx) + "' is not a number");
+    if (!parse_double(ty, &y)) return fail("coordinate '" + printable(ty) + "' is not a number");
     if (!std::isfinite(x) || !std::isfinite(y)) {
       return fail("coordinate of vertex " + std::to_string(i + 1) + " ('" +
-                  (std::isfinite(x) ? ty : tx) + "') is not finite");
+                  printable(std::isfinite(x) ? ty : tx) + "') is not finite");
     }
     result.emplace_back(x, y);
   }
@@ -116,10 +140,10 @@ Polygon parse_points_list(const std::string& text) {
     double x = 0, y = 0;
     if (comma == std::string::npos || !parse_double(token.substr(0, comma), &x) ||
         !parse_double(token.substr(comma + 1), &y)) {
-      throw std::invalid_argument("point '" + token + "' is not of the form x,y");
+      throw std::invalid_argument("point '" + printable(token) + "' is not of the form x,y");
     }
     if (!std::isfinite(x) || !std::isfinite(y)) {
-      throw std::invalid_argument("point '" + token + "' is not finite");
+      throw std::invalid_argument("point '" + printable(token) + "' is not finite");
     }
     polygon.emplace_back(x, y);
   }
@@ -127,46 +151,64 @@ Polygon parse_points_list(const std::string& text) {
 }
 
 std::vector<std::string> read_text_lines(const std::string& path) {
-  std::ifstream file(path);
-  if (!file) throw std::runtime_error(path + ": cannot open for reading");
+  return read_text_lines(path, kMaxTextFileBytes, "a text file");
+}
+
+std::vector<std::string> read_text_lines(const std::string& path, std::size_t max_bytes,
+                                         const std::string& what) {
+  const std::string text = read_file_bounded(path, {max_bytes, what});
+  std::vector<std::string> lines;
+  std::size_t start = 0;
+  while (start < text.size()) {
+    std::size_t end = text.find('\n', start);
+    if (end == std::string::npos) end = text.size();
+    std::string line = text.substr(start, end - start);
+    if (!line.empty() && line.back() == '\r') line.pop_back();
+    lines.push_back(std::move(line));
+    start = end + 1;
+  }
+  return lines;
+}
+
+std::vector<std::string> read_polygon_lines(const std::string& path) {
+  BoundedReader reader(path, {kMaxTextFileBytes, "a polygon file"});
   std::vector<std::string> lines;
   std::string line;
-  while (std::getline(file, line)) {
+  while (reader.read_line(&line, kMaxLineLength)) {
     if (!line.empty() && line.back() == '\r') line.pop_back();
     lines.push_back(std::move(line));
   }
-  if (file.bad()) throw std::runtime_error(path + ": read error");
+  if (lines.empty()) throw std::runtime_error(printable(path) + ": file is empty");
   return lines;
 }
 
 Polygon read_first_polygon(const std::string& path) {
-  std::ifstream file(path, std::ios::binary);
-  if (!file) throw std::runtime_error(path + ": cannot open for reading");
-  // Read up to the first newline only, never more than the line limit: the file may be huge,
-  // endless (/dev/zero) or a pipe.
+  // Up to the first newline only, never more than the line limit: the file may be huge, endless
+  // (/dev/zero) or a pipe.
+  BoundedReader reader(path, {kMaxTextFileBytes, "a polygon file"});
   std::string line;
-  char chunk[4096];
-  bool found_newline = false;
-  while (!found_newline && line.size() <= kMaxLineLength) {
-    file.read(chunk, sizeof(chunk));
-    const std::streamsize got = file.gcount();
-    if (got <= 0) break;
-    const char* newline = static_cast<const char*>(std::memchr(chunk, '\n', got));
-    found_newline = newline != nullptr;
-    line.append(chunk, found_newline ? newline - chunk : got);
+  if (!reader.read_line(&line, kMaxLineLength)) {
+    throw std::runtime_error(printable(path) + ": file is empty");
   }
-  if (file.bad()) throw std::runtime_error(path + ": read error");
-  if (line.size() > kMaxLineLength) {
-    throw std::runtime_error(path + ":1: line longer than 1 MiB (the limit of the polygon format)");
-  }
-  if (line.empty() && !found_newline) throw std::runtime_error(path + ": file is empty");
   if (!line.empty() && line.back() == '\r') line.pop_back();
   Polygon polygon;
   std::string error;
   if (!try_parse_polygon_line(line, &polygon, &error)) {
-    throw std::runtime_error(path + ":1: " + error);
+    throw std::runtime_error(printable(path) + ":1: " + error);
   }
   return polygon;
+}
+
+int drop_repeated_vertices(Polygon* polygon) {
+  Polygon kept;
+  kept.reserve(polygon->size());
+  for (const Point& p : *polygon) {
+    if (kept.empty() || !(p == kept.back())) kept.push_back(p);
+  }
+  while (kept.size() > 1 && kept.back() == kept.front()) kept.pop_back();
+  const int dropped = static_cast<int>(polygon->size() - kept.size());
+  *polygon = std::move(kept);
+  return dropped;
 }
 
 void check_boundary_polygon(const Polygon& polygon) {
@@ -186,8 +228,17 @@ void check_boundary_polygon(const Polygon& polygon) {
   if (count_distinct_points(polygon) != static_cast<int>(polygon.size())) {
     throw std::invalid_argument("polygon repeats a vertex");
   }
-  if (area(polygon) < 1.0) throw std::invalid_argument("polygon encloses no area");
-  if (!is_simple(polygon)) throw std::invalid_argument("polygon intersects itself");
+  if (all_on_one_line(polygon)) {
+    throw std::invalid_argument("polygon encloses no area (its vertices lie on one line)");
+  }
+  if (!is_simple(polygon)) throw std::invalid_argument("polygon crosses itself");
+  const double enclosed = area(polygon);
+  if (enclosed < kMinBoundaryArea) {
+    char text[128];
+    std::snprintf(text, sizeof(text), "polygon encloses %.3g px², smaller than %g px²", enclosed,
+                  kMinBoundaryArea);
+    throw std::invalid_argument(text);
+  }
 }
 
 }  // namespace scbt

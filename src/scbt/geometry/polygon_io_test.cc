@@ -200,11 +200,51 @@ TEST(CheckBoundaryPolygon, RejectsUnusablePolygons) {
   rejects({{0, 0}, {10, 0}}, "3 distinct");
   rejects({{0, 0}, {10, 0}, {0, 0}, {10, 0}}, "3 distinct");
   rejects({{0, 0}, {10, 0}, {10, 10}, {10, 0}}, "repeats");
-  rejects({{0, 0}, {10, 0}, {20, 0}}, "no area");
-  rejects({{0, 0}, {10, 10}, {10, 0}, {0, 10}}, "no area");     // symmetric bow-tie: lobes cancel
-  rejects({{0, 0}, {30, 20}, {30, 0}, {0, 10}}, "intersects");  // unequal lobes
+  rejects({{0, 0}, {10, 0}, {20, 0}}, "polygon encloses no area (its vertices lie on one line)");
+  rejects({{10, 10}, {20, 20}, {30, 30}, {40, 40}}, "no area (its vertices lie on one line)");
+  // A bow-tie crosses itself, whether or not its lobes' areas cancel.
+  rejects({{0, 0}, {10, 10}, {10, 0}, {0, 10}}, "polygon crosses itself");
+  rejects({{0, 0}, {30, 20}, {30, 0}, {0, 10}}, "polygon crosses itself");
+  rejects({{10, 10}, {11, 10}, {10, 11}}, "polygon encloses 0.5 px², smaller than 1 px²");
   rejects({{0, 0}, {nan, 0}, {10, 10}}, "vertex 2");
   rejects({{0, 0}, {10, 0}, {10, inf}}, "vertex 3");
+}
+
+// Ground-truth files repeat a vertex right after itself, or the first one last: those go; a
+// vertex repeated elsewhere stays (and is refused as a boundary).
+TEST(DropRepeatedVertices, DropsOnlyConsecutiveRepeats) {
+  Polygon p = {{0, 0}, {10, 0}, {10, 0}, {10, 10}, {0, 10}, {0, 0}};
+  EXPECT_EQ(drop_repeated_vertices(&p), 2);
+  EXPECT_EQ(p, (Polygon{{0, 0}, {10, 0}, {10, 10}, {0, 10}}));
+  EXPECT_NO_THROW(check_boundary_polygon(p));
+  Polygon back = {{0, 0}, {10, 0}, {10, 10}, {10, 0}};
+  EXPECT_EQ(drop_repeated_vertices(&back), 0);
+  EXPECT_EQ(back.size(), 4u);
+  Polygon same = {{1, 1}, {1, 1}, {1, 1}};
+  EXPECT_EQ(drop_repeated_vertices(&same), 2);
+  EXPECT_EQ(same.size(), 1u);
+}
+
+// Text quoted from a file is escaped: a NUL byte does not cut the message.
+TEST(PolygonIo, AQuotedNulByteIsEscaped) {
+  expect_throw_containing<std::invalid_argument>(
+      [] { parse_polygon_line(std::string("3 1 1 6\0x 1 5 8", 15)); },
+      "coordinate '6\\x00x' is not a number");
+}
+
+TEST_F(TempDir, AFolderIsNamedAsOne) {
+  expect_throw_containing<std::runtime_error>([&] { read_first_polygon(dir_.string()); },
+                                              dir_.string() + ": is a folder, not a file");
+}
+
+TEST_F(TempDir, PolygonLinesAreAllRead) {
+  const std::string path = write("gt.txt", "3 1 1 10 1 5 8\r\n3 2 2 10 1 5 8\n\n");
+  EXPECT_EQ(read_polygon_lines(path),
+            (std::vector<std::string>{"3 1 1 10 1 5 8", "3 2 2 10 1 5 8", ""}));
+  expect_throw_containing<std::runtime_error>([] { read_polygon_lines("/dev/zero"); },
+                                              "/dev/zero:1: line longer than 1 MiB");
+  expect_throw_containing<std::runtime_error>([&] { read_polygon_lines(write("e.txt", "")); },
+                                              "e.txt: file is empty");
 }
 
 }  // namespace

@@ -3,22 +3,37 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
-#include <fstream>
 #include <opencv2/imgcodecs.hpp>
 #include <sstream>
 #include <stdexcept>
 
+#include "scbt/geometry/polygon_io.h"
+#include "scbt/io/bounded_read.h"
 #include "scbt/io/frame_source.h"
 
 namespace scbt {
 namespace fs = std::filesystem;
+namespace {
+
+// "1 channel of 32-bit float", "3 channels of 8-bit unsigned".
+std::string describe_pixel_type(const cv::Mat& image) {
+  static const char* const kDepths[] = {"8-bit unsigned", "8-bit signed",  "16-bit unsigned",
+                                        "16-bit signed",  "32-bit signed", "32-bit float",
+                                        "64-bit float",   "16-bit float"};
+  const int depth = image.depth();
+  const std::string kind = depth >= 0 && depth < 8 ? kDepths[depth] : "unknown";
+  return std::to_string(image.channels()) +
+         (image.channels() == 1 ? " channel of " : " channels of ") + kind;
+}
+
+}  // namespace
 
 std::vector<std::pair<double, std::string>> read_tum_list(const std::string& path) {
-  std::ifstream file(path);
-  if (!file) throw std::runtime_error(path + ": cannot open");
+  const std::vector<std::string> lines = read_text_lines(path, kMaxTextFileBytes, "a TUM list");
   std::vector<std::pair<double, std::string>> entries;
-  std::string line;
-  for (int number = 1; std::getline(file, line); ++number) {
+  for (std::size_t index = 0; index < lines.size(); ++index) {
+    const std::string& line = lines[index];
+    const std::size_t number = index + 1;
     const std::size_t start = line.find_first_not_of(" \t\r");
     if (start == std::string::npos || line[start] == '#') continue;
     std::istringstream fields(line);
@@ -86,12 +101,19 @@ DepthSource::DepthSource(const std::string& input) {
 cv::Mat DepthSource::read(int index) const {
   if (index < 0 || index >= size() || files_[index].empty()) return cv::Mat();
   const std::string& path = files_[index];
-  cv::Mat depth = cv::imread(path, cv::IMREAD_ANYDEPTH | cv::IMREAD_UNCHANGED);
+  const std::string bytes = read_file_bounded(path, {kMaxImageFileBytes, "a depth image"});
+  cv::Mat depth;
+  if (!bytes.empty()) {
+    const cv::Mat encoded(1, static_cast<int>(bytes.size()), CV_8U,
+                          const_cast<char*>(bytes.data()));
+    depth = cv::imdecode(encoded, cv::IMREAD_ANYDEPTH | cv::IMREAD_UNCHANGED);
+  }
   if (depth.empty()) throw std::runtime_error(path + ": cannot read the depth image");
   if (depth.type() != CV_16UC1)
-    throw std::runtime_error(path + ": a depth image must be single-channel 16-bit (got " +
-                             std::to_string(depth.channels()) + " channel(s) of " +
-                             (depth.depth() == CV_8U ? "8" : "other") + "-bit data)");
+    throw std::runtime_error(path +
+                             ": a depth image must be single-channel 16-bit unsigned (depth "
+                             "units, --depth-scale metres each), got " +
+                             describe_pixel_type(depth));
   return depth;
 }
 

@@ -12,6 +12,8 @@
 #include <opencv2/videoio.hpp>
 #include <stdexcept>
 
+#include "scbt/io/bounded_read.h"
+
 namespace scbt {
 namespace fs = std::filesystem;
 namespace {
@@ -44,13 +46,9 @@ void normalize_frame(cv::Mat* frame, const std::string& name) {
 }
 
 std::vector<unsigned char> read_file_bytes(const std::string& path) {
-  std::ifstream file(path, std::ios::binary);
-  if (!file) throw std::runtime_error(path + ": cannot open for reading");
-  std::vector<unsigned char> bytes((std::istreambuf_iterator<char>(file)),
-                                   std::istreambuf_iterator<char>());
-  if (file.bad()) throw std::runtime_error(path + ": read error");
-  if (bytes.empty()) throw std::runtime_error(path + ": empty file");
-  return bytes;
+  const std::string text = read_file_bounded(path, {kMaxImageFileBytes, "an image file"});
+  if (text.empty()) throw std::runtime_error(path + ": empty file");
+  return std::vector<unsigned char>(text.begin(), text.end());
 }
 
 // Decoders fill a cut-off JPEG or PNG with grey and only warn, so the end markers are checked:

@@ -7,6 +7,8 @@
 #include <cstring>
 #include <stdexcept>
 
+#include "scbt/io/bounded_read.h"
+
 namespace scbt {
 namespace {
 
@@ -17,8 +19,13 @@ int open_output(const OutputTarget& target, std::string* temporary) {
     case OutputKind::kStdout:
       return STDOUT_FILENO;
     case OutputKind::kInPlace: {
-      // No O_TRUNC: a device or FIFO has nothing to truncate, and O_CREAT could not apply.
-      const int fd = ::open(target.target.c_str(), O_WRONLY | O_CLOEXEC | O_NOCTTY);
+      // No O_TRUNC: a device or FIFO has nothing to truncate, and O_CREAT could not apply. A
+      // FIFO waits in open() for its reader; a stop signal ends the wait (EINTR).
+      int fd = -1;
+      do {
+        throw_if_stop_requested(printable(target.path) + ": waiting for a reader");
+        fd = ::open(target.target.c_str(), O_WRONLY | O_CLOEXEC | O_NOCTTY);
+      } while (fd < 0 && errno == EINTR);
       if (fd < 0) {
         throw std::runtime_error(printable(target.path) +
                                  ": cannot open for writing: " + std::strerror(errno));

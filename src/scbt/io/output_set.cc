@@ -172,10 +172,29 @@ void FrameFolderOutput::write(int index, const cv::Mat& image) {
   std::snprintf(name, sizeof(name), "%04d.jpg", index);
   const std::string final_name = (fs::path(folder_) / name).string();
   std::string temporary;
-  ::close(create_temporary_sibling(final_name, ".jpg", final_name, &temporary));
+  const int fd = create_temporary_sibling(final_name, ".jpg", final_name, &temporary);
   pending_.emplace_back(temporary, final_name);
-  if (!cv::imwrite(temporary, image)) {
-    throw std::runtime_error(printable(final_name) + ": cannot write image");
+  // Encoded here and written through the descriptor, so that a failure has its reason (errno).
+  std::vector<unsigned char> bytes;
+  if (!cv::imencode(".jpg", image, bytes)) {
+    ::close(fd);
+    throw std::runtime_error(printable(final_name) + ": cannot encode the image as JPEG");
+  }
+  const unsigned char* next = bytes.data();
+  std::size_t left = bytes.size();
+  while (left > 0) {
+    const ssize_t written = ::write(fd, next, left);
+    if (written < 0 && errno == EINTR) continue;
+    if (written < 0) {
+      const int error = errno;
+      ::close(fd);
+      throw std::runtime_error(printable(final_name) + ": write failed: " + std::strerror(error));
+    }
+    next += written;
+    left -= static_cast<std::size_t>(written);
+  }
+  if (::close(fd) != 0) {
+    throw std::runtime_error(printable(final_name) + ": write failed: " + std::strerror(errno));
   }
 }
 

@@ -6,6 +6,8 @@
 
 #include <string>
 
+#include "scbt/io/printable.h"
+
 namespace scbt {
 
 enum class OutputKind {
@@ -40,9 +42,5 @@ int create_temporary_sibling(const std::string& target, const std::string& suffi
 // Gives the temporary file at `fd` the permission bits (and, when allowed, the owner) of the
 // target it is going to replace, so an 0600 file stays 0600.
 void copy_permissions(int fd, const OutputTarget& target);
-
-// The text with control characters (newline, escape, ...) shown as \n, \x1b, ...: file names in
-// messages cannot break a message into lines or drive the terminal.
-std::string printable(const std::string& text);
 
 }  // namespace scbt
