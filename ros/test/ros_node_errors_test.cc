@@ -6,6 +6,7 @@
 #include <cstdlib>
 
 #include "node_under_test.h"
+#include "scbt/app/ci_requirement.h"
 #include "scbt_ros/conversions.h"
 
 namespace scbt::ros_test {
@@ -140,7 +141,7 @@ TEST(RosNode, UnknownParametersAreWarnedAbout) {
 
 // roslaunch scbt_ros scbt.launch, found through ROS_PACKAGE_PATH=<build>/ros, on our master.
 TEST(RosNode, LaunchFileStartsATrackingNode) {
-  if (!on_path("roslaunch")) GTEST_SKIP() << "roslaunch not installed";
+  SCBT_REQUIRE(on_path("roslaunch"), "roslaunch (python3-roslaunch; scripts/setup.sh installs it)");
   const std::string package_dir = g_node_path.substr(0, g_node_path.rfind('/'));
   setenv("ROS_PACKAGE_PATH", package_dir.c_str(), 1);
   const std::vector<SceneFrame> clip = render_test_clip(SceneShape::kRim, 13, 2);

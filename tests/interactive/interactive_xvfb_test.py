@@ -11,7 +11,9 @@ screenshot shows the boundary in the tracking state's green on the moved outline
 segments.
 
 Usage: interactive_xvfb_test.py SCBT_BINARY WORK_DIR
-Exit code 77 (ctest SKIP_RETURN_CODE) when Xvfb, xdotool, xwd/convert or cv2 are missing.
+Exit code 77 (ctest SKIP_RETURN_CODE) when Xvfb, xdotool, xwd/convert or cv2 are missing; under
+CI=true that is a failure (exit 1) instead, as for every test's missing tool or dataset
+(src/scbt/app/ci_requirement.h).
 """
 
 import os
@@ -29,7 +31,11 @@ try:
 except ImportError as error:  # pragma: no cover - depends on the machine
     missing.append(f"python3 module ({error})")
 if missing:
-    print("SKIP: missing " + ", ".join(missing) + " (bash scripts/setup.sh installs them)")
+    needed = "missing " + ", ".join(missing) + " (bash scripts/setup.sh installs them)"
+    if os.environ.get("CI") == "true":
+        print("FAILED (CI=true): " + needed)
+        sys.exit(1)
+    print("SKIP (under CI=true this fails): " + needed)
     sys.exit(SKIP)
 
 SIZE = (320, 240)

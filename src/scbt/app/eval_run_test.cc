@@ -10,6 +10,7 @@
 #include <opencv2/imgcodecs.hpp>
 #include <sstream>
 
+#include "scbt/app/ci_requirement.h"
 #include "scbt/app/test_dataset.h"
 #include "scbt/eval/alignment_error.h"
 #include "scbt/geometry/polygon_io.h"
@@ -275,8 +276,7 @@ TEST_F(EvalRunTest, ProgressNamesEveryJob) {
 
 // On the real dataset (when present): the first frames of one sequence, bdsp against static.
 TEST(EvalRunDataset, BdspBeatsTheStaticFloorOnTheFirstFrames) {
-  const char* dataset = std::getenv("SCBT_DATASET");
-  if (!dataset || !fs::is_directory(dataset)) GTEST_SKIP() << "SCBT_DATASET not set";
+  SCBT_REQUIRE_DATASET(dataset);
   EvalRunOptions options;
   options.dataset = dataset;
   options.sequences = {"Bowl"};
