@@ -1,5 +1,3 @@
-#include "scbt/tracker/tracker.h"
-
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -13,6 +11,7 @@
 #include "scbt/lines/line_detector.h"
 #include "scbt/tracker/frame_checks.h"
 #include "scbt/tracker/stage_clock.h"
+#include "scbt/tracker/tracker_impl.h"
 
 namespace scbt {
 namespace {
@@ -25,10 +24,28 @@ double own_smoothing(const TrackerOptions& options) {
 }  // namespace
 
 Tracker::Tracker(const TrackerOptions& options)
-    : Tracker(options, [] { return std::make_unique<FastCycleStage>(); }) {}
+    : Tracker(make_tracker(options, [] { return std::make_unique<FastCycleStage>(); })) {}
+Tracker::Tracker(std::unique_ptr<Impl> impl) : impl_(std::move(impl)) {}
+Tracker::~Tracker() = default;
+Tracker::Tracker(Tracker&&) noexcept = default;
+Tracker& Tracker::operator=(Tracker&&) noexcept = default;
 
-Tracker::Tracker(const TrackerOptions& options,
-                 const std::function<std::unique_ptr<CycleStage>()>& make_cycle_stage)
+void Tracker::init(const cv::Mat& frame, const Polygon& polygon) { impl_->init(frame, polygon); }
+Polygon Tracker::init_from_box(const cv::Mat& frame, const cv::Rect& box) {
+  return impl_->init_from_box(frame, box);
+}
+TrackResult Tracker::track(const cv::Mat& frame) { return impl_->track(frame); }
+bool Tracker::initialized() const { return impl_->initialized(); }
+const Polygon& Tracker::boundary() const { return impl_->boundary(); }
+const TrackerOptions& Tracker::options() const { return impl_->options(); }
+void Tracker::set_keep_debug(bool keep) { impl_->set_keep_debug(keep); }
+const TrackDebug& Tracker::debug() const { return impl_->debug(); }
+
+Tracker make_tracker(const TrackerOptions& options, const MakeCycleStage& make_cycle_stage) {
+  return Tracker(std::make_unique<Tracker::Impl>(options, make_cycle_stage));
+}
+
+Tracker::Impl::Impl(const TrackerOptions& options, const MakeCycleStage& make_cycle_stage)
     : options_(options),
       appearance_(options.appearance),
       monitor_(options.loss),
@@ -41,11 +58,7 @@ Tracker::Tracker(const TrackerOptions& options,
   for (Attempt& a : attempts_) a.cycles = make_cycle_stage();
 }
 
-Tracker::~Tracker() = default;
-Tracker::Tracker(Tracker&&) noexcept = default;
-Tracker& Tracker::operator=(Tracker&&) noexcept = default;
-
-void Tracker::scale_thresholds_to_exposure(const cv::Mat& frame) {
+void Tracker::Impl::scale_thresholds_to_exposure(const cv::Mat& frame) {
   gradient_threshold_ = options_.detector.gradient_threshold;
   anchor_threshold_ = options_.detector.anchor_threshold;
   exposure_stretch_ = {};
@@ -68,7 +81,7 @@ void Tracker::scale_thresholds_to_exposure(const cv::Mat& frame) {
   detector_->set_edge_thresholds(gradient_threshold_, anchor_threshold_);
 }
 
-void Tracker::to_exposed_gray(const cv::Mat& part, cv::Mat* gray) const {
+void Tracker::Impl::to_exposed_gray(const cv::Mat& part, cv::Mat* gray) const {
   to_gray(part, gray);
   if (exposure_stretch_.gain <= 1.0) return;
   // Grey input comes back as a view of the caller's frame, which must not be written.
@@ -76,7 +89,7 @@ void Tracker::to_exposed_gray(const cv::Mat& part, cv::Mat* gray) const {
   apply_grey_stretch(exposure_stretch_, gray);
 }
 
-void Tracker::measure_edge_blur(const cv::Mat& gray, cv::Point window_tl) {
+void Tracker::Impl::measure_edge_blur(const cv::Mat& gray, cv::Point window_tl) {
   blur_frames_waited_ = 0;
   if (!options_.blur.adapt) return;
   // A clear step: twice the smallest one the detector sees (a Sobel response of the threshold is
@@ -91,7 +104,7 @@ void Tracker::measure_edge_blur(const cv::Mat& gray, cv::Point window_tl) {
       edge_blur_sigma_ > 0.0 ? edge_blur_sigma_ + weight * (sigma - edge_blur_sigma_) : sigma;
 }
 
-void Tracker::init(const cv::Mat& frame, const Polygon& polygon) {
+void Tracker::Impl::init(const cv::Mat& frame, const Polygon& polygon) {
   check_tracker_init(frame, polygon, &gray_);
   boundary_ = polygon;
   boundary_area_ = area(polygon);
@@ -118,8 +131,8 @@ void Tracker::init(const cv::Mat& frame, const Polygon& polygon) {
   keyframes_.clear();
 }
 
-void Tracker::attempt(const cv::Mat& frame, const Polygon& prior, Attempt* a, double min_similarity,
-                      bool adapt, double gate_area) {
+void Tracker::Impl::attempt(const cv::Mat& frame, const Polygon& prior, Attempt* a,
+                            double min_similarity, bool adapt, double gate_area) {
   a->num_dropped = 0;
   a->choice.reset();
   a->assessed = false;
@@ -202,7 +215,7 @@ void Tracker::attempt(const cv::Mat& frame, const Polygon& prior, Attempt* a, do
       a->stages.filter_ms + a->stages.graph_ms + a->stages.search_ms + a->stages.choice_ms;
 }
 
-double Tracker::camera_noise(const cv::Mat& gray) {
+double Tracker::Impl::camera_noise(const cv::Mat& gray) {
   // A camera's noise changes slowly: measured on the first window of every kNoiseInterval-th
   // frame that asks.
   constexpr int kNoiseInterval = 8;
@@ -213,8 +226,8 @@ double Tracker::camera_noise(const cv::Mat& gray) {
   return noise_sigma_;
 }
 
-const cv::Mat& Tracker::smooth_if_noisy(const cv::Mat& gray, cv::Mat* smoothed,
-                                        bool* thresholds_changed) {
+const cv::Mat& Tracker::Impl::smooth_if_noisy(const cv::Mat& gray, cv::Mat* smoothed,
+                                              bool* thresholds_changed) {
   const double sigma = smoothing_for_noise(camera_noise(gray), options_.adaptive_thresholds);
   if (sigma <= 0.0) return gray;
   cv::GaussianBlur(gray, *smoothed, cv::Size(0, 0), sigma);
@@ -229,11 +242,11 @@ const cv::Mat& Tracker::smooth_if_noisy(const cv::Mat& gray, cv::Mat* smoothed,
   return *smoothed;
 }
 
-bool Tracker::keeps_motion_reference() const {
+bool Tracker::Impl::keeps_motion_reference() const {
   return options_.recover_by_motion || (options_.predict_motion && options_.measure_motion);
 }
 
-void Tracker::remember_reference(const cv::Mat& frame, const Attempt& a) {
+void Tracker::Impl::remember_reference(const cv::Mat& frame, const Attempt& a) {
   // The reference is the window the image motion is measured against (recovery, prediction).
   if (!keeps_motion_reference()) return;
   settle_appearance();
@@ -248,7 +261,7 @@ void Tracker::remember_reference(const cv::Mat& frame, const Attempt& a) {
   }
 }
 
-void Tracker::report_attempt(const Attempt& a, TrackResult* result) {
+void Tracker::Impl::report_attempt(const Attempt& a, TrackResult* result) {
   result->num_detected = static_cast<int>(a.detected.size());
   result->num_kept = static_cast<int>(a.kept.size());
   result->num_dropped = a.num_dropped;
@@ -261,7 +274,7 @@ void Tracker::report_attempt(const Attempt& a, TrackResult* result) {
   }
 }
 
-TrackResult Tracker::track(const cv::Mat& frame) {
+TrackResult Tracker::Impl::track(const cv::Mat& frame) {
   if (!initialized()) throw std::logic_error("Tracker::track called before init");
   if (frame.empty()) to_gray(frame, &gray_);  // throws
   check_frame_size(frame, frame_size_);

@@ -6,7 +6,7 @@
 
 #include "scbt/lines/line_detector.h"
 #include "scbt/tracker/stage_clock.h"
-#include "scbt/tracker/tracker.h"
+#include "scbt/tracker/tracker_impl.h"
 #include "scbt/tracker/view_cut.h"
 
 namespace scbt {
@@ -25,8 +25,9 @@ constexpr double kCoarseScaleStep = 1.2;
 
 }  // namespace
 
-BoundaryEvidence Tracker::evidence_of(const Attempt& a, const Polygon& chosen,
-                                      const Polygon& previous, ShapeDescriptor* descriptor) const {
+BoundaryEvidence Tracker::Impl::evidence_of(const Attempt& a, const Polygon& chosen,
+                                            const Polygon& previous,
+                                            ShapeDescriptor* descriptor) const {
   const double gap_length = a.choice->cost * a.cycles->area(a.choice->index);
   BoundaryEvidence evidence =
       measure_evidence(chosen, gap_length, previous, monitor_.reference(), gray_, a.roi.tl(),
@@ -35,12 +36,12 @@ BoundaryEvidence Tracker::evidence_of(const Attempt& a, const Polygon& chosen,
   return evidence;
 }
 
-bool Tracker::outline_left(const Attempt& a, const Polygon& left) const {
+bool Tracker::Impl::outline_left(const Attempt& a, const Polygon& left) const {
   const EdgeSamples there = sample_edges(left, gray_, a.roi.tl(), min_edge_step(step_threshold_));
   return there.support < a.evidence.edge_support;
 }
 
-void Tracker::check_view_cut(const cv::Mat& frame, const TrackResult& result) {
+void Tracker::Impl::check_view_cut(const cv::Mat& frame, const TrackResult& result) {
   const LossOptions& loss = options_.loss;
   const bool surprise = result.held || result.confidence < loss.tracking_confidence ||
                         result.evidence.shape_change > loss.match_shape_distance;
@@ -60,7 +61,7 @@ void Tracker::check_view_cut(const cv::Mat& frame, const TrackResult& result) {
   }
 }
 
-TrackResult Tracker::track_lost(const cv::Mat& frame) {
+TrackResult Tracker::Impl::track_lost(const cv::Mat& frame) {
   TrackResult result;
   // After a cut of the view, where the object was says nothing: only the whole-frame search.
   if (!monitor_.after_cut() && resume_in_place(frame, &result)) return result;

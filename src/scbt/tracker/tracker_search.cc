@@ -1,6 +1,6 @@
-// A tracking frame's search (Tracker::search): where the boundary is or its motion predicts it,
-// the weak-frame retry, where it was, its predicted growth, one gate step smaller, and where the
-// image moved it; the checks each second search's boundary must pass, and the appearance that
+// A tracking frame's search (Tracker::Impl::search): where the boundary is or its motion predicts
+// it, the weak-frame retry, where it was, its predicted growth, one gate step smaller, and where
+// the image moved it; the checks each second search's boundary must pass, and the appearance that
 // confirms a prediction.
 #include <opencv2/core.hpp>
 #include <optional>
@@ -8,11 +8,11 @@
 #include "scbt/lines/line_detector.h"
 #include "scbt/tracker/motion_estimate.h"
 #include "scbt/tracker/stage_clock.h"
-#include "scbt/tracker/tracker.h"
+#include "scbt/tracker/tracker_impl.h"
 
 namespace scbt {
 
-void Tracker::add_retry_times(const Attempt& retry, TrackResult* result) {
+void Tracker::Impl::add_retry_times(const Attempt& retry, TrackResult* result) {
   result->line_ms += retry.line_ms;
   result->grouping_ms += retry.grouping_ms;
   result->stages.filter_ms += retry.stages.filter_ms;
@@ -21,7 +21,7 @@ void Tracker::add_retry_times(const Attempt& retry, TrackResult* result) {
   result->stages.choice_ms += retry.stages.choice_ms;
 }
 
-void Tracker::remember_appearance(const cv::Mat& frame) {
+void Tracker::Impl::remember_appearance(const cv::Mat& frame) {
   if (!options_.predict_motion || !options_.confirm_motion) return;
   appearance_pending_ = false;
   if (keeps_motion_reference() && !reference_gray_.empty()) {
@@ -32,7 +32,7 @@ void Tracker::remember_appearance(const cv::Mat& frame) {
   }
 }
 
-void Tracker::settle_appearance() {
+void Tracker::Impl::settle_appearance() {
   if (!appearance_pending_) return;
   appearance_pending_ = false;
   // The reference window holds the boundary with the profile's few pixels either side (it is
@@ -41,14 +41,14 @@ void Tracker::settle_appearance() {
   appearance_.remember(reference_gray_, appearance_boundary_);
 }
 
-bool Tracker::confirmed(const cv::Mat& frame, const Polygon& moved, const Polygon& unmoved) {
+bool Tracker::Impl::confirmed(const cv::Mat& frame, const Polygon& moved, const Polygon& unmoved) {
   settle_appearance();
   const double agreement = appearance_.agreement(frame, moved);
   return agreement >= options_.min_motion_agreement &&
          agreement > appearance_.agreement(frame, unmoved);
 }
 
-Tracker::Attempt* Tracker::search(const cv::Mat& frame, TrackResult* result) {
+Tracker::Impl::Attempt* Tracker::Impl::search(const cv::Mat& frame, TrackResult* result) {
   found_smaller_ = false;
   if (options_.predict_motion && options_.measure_motion) {
     place_by_image_motion(frame);
@@ -175,7 +175,7 @@ Tracker::Attempt* Tracker::search(const cv::Mat& frame, TrackResult* result) {
   return a;
 }
 
-void Tracker::assess(Attempt* a, const Polygon& previous) const {
+void Tracker::Impl::assess(Attempt* a, const Polygon& previous) const {
   a->assessed = true;
   if (!a->choice) return;
   a->boundary = a->cycles->polygon(a->graph, a->choice->index);
@@ -183,15 +183,16 @@ void Tracker::assess(Attempt* a, const Polygon& previous) const {
   a->confidence = options_.confidence(a->evidence);
 }
 
-bool Tracker::trusted(const Attempt& a, bool adapted) const {
+bool Tracker::Impl::trusted(const Attempt& a, bool adapted) const {
   // Lowered thresholds close many more cycles, as a search for a lost object tests many more:
   // their boundary must also keep the reference shape, as a re-found object's must.
   return a.choice && a.confidence >= options_.loss.tracking_confidence &&
          (!adapted || a.evidence.shape_change <= options_.loss.match_shape_distance);
 }
 
-Tracker::Attempt* Tracker::retry_weak(const cv::Mat& frame, Attempt* first, const Polygon& prior,
-                                      Attempt* retry, TrackResult* result, double gate_area) {
+Tracker::Impl::Attempt* Tracker::Impl::retry_weak(const cv::Mat& frame, Attempt* first,
+                                                  const Polygon& prior, Attempt* retry,
+                                                  TrackResult* result, double gate_area) {
   assess(first, boundary_);
   const bool first_adapted = adapted_first_;
   if (trusted(*first, first_adapted)) return first;

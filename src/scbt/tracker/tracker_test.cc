@@ -11,6 +11,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "scbt/tracker/frame_checks.h"
+
 namespace scbt {
 namespace {
 
