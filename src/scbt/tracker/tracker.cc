@@ -41,6 +41,28 @@ const TrackerOptions& Tracker::options() const { return impl_->options(); }
 void Tracker::set_keep_debug(bool keep) { impl_->set_keep_debug(keep); }
 const TrackDebug& Tracker::debug() const { return impl_->debug(); }
 
+const char* step_name(SearchStep step) {
+  switch (step) {
+    case SearchStep::kNone:
+      return "none";
+    case SearchStep::kPredicted:
+      return "predicted";
+    case SearchStep::kUnmoved:
+      return "unmoved";
+    case SearchStep::kGrowth:
+      return "growth";
+    case SearchStep::kSmaller:
+      return "smaller";
+    case SearchStep::kImageMotion:
+      return "image motion";
+    case SearchStep::kInPlace:
+      return "in place";
+    case SearchStep::kWholeFrame:
+      return "whole frame";
+  }
+  return "none";
+}
+
 Tracker make_tracker(const TrackerOptions& options, const MakeCycleStage& make_cycle_stage) {
   return Tracker(std::make_unique<Tracker::Impl>(options, make_cycle_stage));
 }
@@ -310,9 +332,9 @@ TrackResult Tracker::Impl::track(const cv::Mat& frame) {
     motion_.update_held();
   }
   // A found boundary's descriptor came with its evidence (assess): the monitor needs no other.
-  result.state =
-      monitor_.update(boundary_, result.confidence, result.held, result.evidence,
-                      result.held ? nullptr : &a->descriptor, result.recovered || found_smaller_);
+  result.state = monitor_.update(boundary_, result.confidence, result.held, result.evidence,
+                                 result.held ? nullptr : &a->descriptor,
+                                 result.recovered || result.step == SearchStep::kSmaller);
   if (result.state == TrackState::kTracking) {
     keyframes_.offer(frame, boundary_);
     if (options_.shape_weight > 0.0) shape_memory_.remember(boundary_);
@@ -322,6 +344,7 @@ TrackResult Tracker::Impl::track(const cv::Mat& frame) {
     // frame, the held boundary stays (the last found, nearest to where the object went).
     boundary_ = monitor_.latest_confident();
     boundary_area_ = area(boundary_);
+    result.step = SearchStep::kNone;  // the boundary reported is no step's
   }
   if (result.state == TrackState::kLost) lost_output_ = boundary_;
 

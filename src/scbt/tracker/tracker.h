@@ -13,6 +13,43 @@
 
 namespace scbt {
 
+// The steps of a frame's search, in the order they run; a frame reports the step whose boundary
+// it took (TrackResult::step). While tracking, a step after the first runs only when the ones
+// before it found nothing (kUnmoved: nothing trusted), and its boundary is taken when it passes
+// the step's test:
+//   kPredicted    where the boundary is, or where its motion puts it (predict_motion,
+//                 measure_motion); a weak frame is searched again with the other thresholds
+//                 (AdaptiveThresholdOptions::retry_weak_frames). Taken as found.
+//   kUnmoved      where the boundary was, when the prediction moved it and found nothing trusted
+//                 (fall_back_unmoved). Taken when trusted and of the reference shape.
+//   kGrowth       with the size its recent growth predicts, when that is beyond the area gate
+//                 (and the image confirms it, confirm_motion). Taken when a cycle passes the gate.
+//   kSmaller      one area-gate step smaller (gate_sustained_shrink): a fast receding object.
+//                 Taken when trusted, of the reference shape, and the outline it shrank from is
+//                 gone.
+//   kImageMotion  where the image around it moved since it was last tracked (recover_by_motion),
+//                 a move of at least half the search band. Taken when a cycle passes the gate.
+// While the object is lost (TrackState::kLost):
+//   kInPlace      the tracking steps above, their boundary taken when it matches the last
+//                 confident one with the tracking bar (LossOptions::tracking_confidence).
+//   kWholeFrame   the last confident outline placed over the whole frame (where it was last
+//                 matched and seen, where the scene keyframes put it, the best-scoring places, then
+//                 other sizes and views), every placement searched and the best match taken once
+//                 found LossOptions::confirm_frames times in a row.
+enum class SearchStep {
+  kNone,  // no boundary found: held, or lost
+  kPredicted,
+  kUnmoved,
+  kGrowth,
+  kSmaller,
+  kImageMotion,
+  kInPlace,
+  kWholeFrame,
+};
+
+// "predicted", "unmoved", "growth", "smaller", "image motion", "in place", "whole frame", "none".
+const char* step_name(SearchStep step);
+
 // Where the grouping time of one frame went (milliseconds; a recovery search adds to each).
 struct StageTimes {
   double filter_ms = 0.0;    // stage 2: distance filter (and the max_segments cap)
@@ -23,9 +60,10 @@ struct StageTimes {
 };
 
 struct TrackResult {
-  Polygon boundary;        // the tracked boundary (the previous one when held)
-  bool held = false;       // no admissible candidate: the previous boundary was kept
-  bool recovered = false;  // found again where image motion moved it (after a miss)
+  Polygon boundary;                     // the tracked boundary (the previous one when held)
+  bool held = false;                    // no admissible candidate: the previous boundary was kept
+  bool recovered = false;               // found again where image motion moved it (after a miss)
+  SearchStep step = SearchStep::kNone;  // the step of the search that found `boundary`
   // How far to trust `boundary` (confidence.h; 0 when held or lost) and what that makes of the
   // frame (track_state.h). While lost, `boundary` is the last confident one and `held` is set.
   TrackState state = TrackState::kTracking;

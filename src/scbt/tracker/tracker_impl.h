@@ -90,21 +90,43 @@ class Tracker::Impl {
   // (when > 0): the area the gate (Eq. 2) compares candidates with instead of the prior's.
   void attempt(const cv::Mat& frame, const Polygon& prior, Attempt* a, double min_similarity,
                bool adapt = false, double gate_area = 0.0);
-  // A tracking frame's search around the boundary: where it is (or its motion predicts it), then
-  // with its predicted growth, then one gate step smaller, then where the image moved it. Returns
-  // the attempt to use (its choice empty when nothing qualified); `result` gets the times.
+  // A tracking frame's search: the tracking steps of SearchStep (tracker.h) in order. Returns the
+  // attempt whose boundary the frame takes (its choice empty when nothing qualified), with
+  // gray_ holding its window; `result` gets the times, the step and `recovered`.
   Attempt* search(const cv::Mat& frame, TrackResult* result);
-  // Whether search() took a boundary below the area gate (a receding object): it is tracked only
-  // with the last confident shape and inside level, as a re-found one.
-  bool found_smaller_ = false;
+  // One frame's search as its steps see it and leave it.
+  struct FrameSearch {
+    TrackResult* result = nullptr;  // gets every step's times
+    Attempt* found = nullptr;       // the attempt taken so far (its choice empty: nothing yet)
+    SearchStep step = SearchStep::kNone;  // the step `found` came from
+    double gate_area = 0.0;               // for attempt(): a sustained shrink's area, or 0
+    bool retry_weak_frames = false;       // AdaptiveThresholdOptions::retry_weak_frames applies
+    bool adapted_first = false;           // the frame's first search uses adapted thresholds
+    bool adapted_next = false;            // ... and the next frame's (keep_retry_winner)
+  };
+  // What one step did: the attempt it searched (nullptr: its conditions did not hold, nothing
+  // searched) and whether the frame takes that attempt's boundary (the step's test, tracker.h).
+  struct StepOutcome {
+    Attempt* searched = nullptr;
+    bool taken = false;
+  };
+  // The tracking steps, one signature (tracker_search.cc).
+  StepOutcome search_predicted(const cv::Mat& frame, FrameSearch* s);
+  StepOutcome search_unmoved(const cv::Mat& frame, FrameSearch* s);
+  StepOutcome search_growth(const cv::Mat& frame, FrameSearch* s);
+  StepOutcome search_smaller(const cv::Mat& frame, FrameSearch* s);
+  StepOutcome search_image_motion(const cv::Mat& frame, FrameSearch* s);
+  // predicted_: where the frame's first search looks (the boundary, or where its motion puts it).
+  void predict_placement(const cv::Mat& frame);
   // Attempt a's chosen cycle (if any), its evidence against `previous` and its confidence; the
   // grey window gray_ must still be a's.
   void assess(Attempt* a, const Polygon& previous) const;
-  // AdaptiveThresholdOptions::retry_weak_frames: `first` or, when it was weak, the search again
-  // with the other thresholds (adapted or published) if that found a more confident boundary.
-  // The retry searches around `prior` (first's, with first's `gate_area`) into `retry`.
+  // AdaptiveThresholdOptions::retry_weak_frames: `first` (searched with s->adapted_first's
+  // thresholds) or, when it was weak, the search again with the other thresholds (adapted or
+  // published) around `prior` into `retry`, if that found a trusted boundary; *adapted_next then
+  // becomes the retry's thresholds when AdaptiveThresholdOptions::keep_retry_winner.
   Attempt* retry_weak(const cv::Mat& frame, Attempt* first, const Polygon& prior, Attempt* retry,
-                      TrackResult* result, double gate_area);
+                      FrameSearch* s, bool* adapted_next);
   // Whether an assessed attempt's boundary may be taken: trusted (LossOptions::tracking_confidence)
   // and, found with `adapted` thresholds, of the reference shape
   // (LossOptions::match_shape_distance).

@@ -215,6 +215,7 @@ TrackResult Tracker::Impl::track_lost(const cv::Mat& frame) {
   result.num_vertices = match_graph_.num_vertices();
   result.num_edges = match_graph_.num_edges();
   if (keep_debug_) debug_.graph = match_graph_;
+  result.step = SearchStep::kWholeFrame;
   resume_tracking_from(frame, std::move(match), &result);
   return result;
 }

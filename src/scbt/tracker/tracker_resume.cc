@@ -28,6 +28,7 @@ bool Tracker::Impl::resume_in_place(const cv::Mat& frame, TrackResult* result) {
   result->confidence = confidence;
   result->cost = a->choice->cost;
   result->area_similarity = a->choice->similarity;
+  result->step = SearchStep::kInPlace;
   report_attempt(*a, result);
   resume_tracking_from(frame, std::move(cycle), result);
   return true;
