@@ -10,9 +10,9 @@
 #include <opencv2/imgcodecs.hpp>
 #include <sstream>
 
-#include "scbt/app/test_dataset.h"
 #include "scbt/eval/alignment_error.h"
 #include "scbt/geometry/polygon_io.h"
+#include "scbt/testing/test_dataset.h"
 
 namespace scbt {
 namespace {

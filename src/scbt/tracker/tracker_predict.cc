@@ -3,7 +3,7 @@
 #include <opencv2/core.hpp>
 
 #include "scbt/lines/line_detector.h"
-#include "scbt/tracker/motion_estimate.h"
+#include "scbt/motion/motion_estimate.h"
 #include "scbt/tracker/tracker_impl.h"
 
 namespace scbt {

@@ -5,7 +5,7 @@
 #include <optional>
 
 #include "scbt/lines/line_detector.h"
-#include "scbt/tracker/motion_estimate.h"
+#include "scbt/motion/motion_estimate.h"
 #include "scbt/tracker/stage_clock.h"
 #include "scbt/tracker/tracker_impl.h"
 
