@@ -188,8 +188,15 @@ class Tracker::Impl {
   // beyond a match): whether the view was cut (LossOptions::cut_correlation), told to the monitor.
   // Needs the motion reference unchanged (tracker_lost.cc).
   void check_view_cut(const cv::Mat& frame, const TrackResult& result);
-  // A frame while the object is lost: search for it, near its last position, then anywhere.
+  // A frame while the object is lost: its steps kInPlace, then kWholeFrame (tracker.h).
   TrackResult track_lost(const cv::Mat& frame);
+  // kWholeFrame's placements of the last confident outline over the frame (its `segments`), in
+  // the order they are searched. Returns how many at the end lie beyond the moderate scales.
+  size_t place_over_frame(const std::vector<Segment>& segments, std::vector<Placement>* placements);
+  // kWholeFrame's best match among the placements, each searched (empty: none); `result` gets
+  // its evidence, cost and the search times, match_graph_ and match_kept_ its graph.
+  Polygon best_match(const cv::Mat& frame, const std::vector<Placement>& placements,
+                     size_t beyond_count, TrackResult* result);
   // The first search while lost (tracker_resume.cc): tracking's own search, with the tracking
   // bar. True (and *result filled) when the object was found there.
   bool resume_in_place(const cv::Mat& frame, TrackResult* result);
