@@ -10,6 +10,7 @@
 
 #include "scbt/synthetic/scene.h"
 #include "scbt/tracker/confidence.h"
+#include "scbt/tracker/frame_checks.h"
 #include "scbt/tracker/scene_keyframes.h"
 #include "scbt/tracker/track_state.h"
 #include "scbt/tracker/tracker.h"

@@ -15,6 +15,7 @@
 #include "scbt/lines/line_detector.h"
 #include "scbt/reference/plain_choice.h"
 #include "scbt/synthetic/scene.h"
+#include "scbt/tracker/frame_checks.h"
 #include "scbt/tracker/tracker.h"
 
 namespace scbt {

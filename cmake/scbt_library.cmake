@@ -7,7 +7,7 @@ include(GNUInstallDirs)
 find_package(Eigen3 3.3 REQUIRED NO_MODULE)  # used by the depth headers
 
 set(SCBT_CORE_LIBRARIES scbt_read scbt_geometry scbt_depth scbt_lines scbt_filter scbt_graph scbt_cycles
-                        scbt_choice scbt_tracker)
+                        scbt_choice scbt_motion scbt_tracker)
 
 # The version, from project(VERSION) only: scbt/version.h for the CLI, the Python module and users.
 configure_file(${PROJECT_SOURCE_DIR}/cmake/version.h.in

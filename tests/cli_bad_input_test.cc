@@ -26,8 +26,8 @@
 
 #include "cli_test_util.h"
 #include "scbt/geometry/polygon_io.h"
-#include "scbt/io/avi_test_util.h"
 #include "scbt/synthetic/scene.h"
+#include "scbt/testing/avi_test_util.h"
 
 namespace scbt {
 namespace {

@@ -113,7 +113,7 @@ class CliOptionsTest : public ::testing::Test {
 TEST_F(CliOptionsTest, TableIsSmallAndWellFormed) {
   const auto& table = tracker_option_table();
   EXPECT_GE(table.size(), 10u);
-  EXPECT_LE(table.size(), 15u);
+  EXPECT_LE(table.size(), 16u);
   const TrackerOptions defaults;
   EXPECT_NO_THROW(check_user_options(defaults));
   for (const OptionSpec& spec : table) {

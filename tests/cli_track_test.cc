@@ -144,6 +144,12 @@ TEST_F(CliTrackTest, LostFramesKeepALineAndSayLostInTheCsvAndTheVideo) {
       }
     }
     if (k >= scene_.first_back && state == "tracking") ++tracking_after;
+    // The note names the search step that found the boundary (none when held or lost).
+    if (row[1] == "0" && state != "lost") {
+      EXPECT_NE(csv[k].find("step: "), std::string::npos) << csv[k];
+    } else {
+      EXPECT_EQ(csv[k].find("step: "), std::string::npos) << csv[k];
+    }
   }
   ASSERT_GT(first_hidden, 0);
   ASSERT_GT(first_lost, 0) << "never lost";

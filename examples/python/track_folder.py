@@ -37,6 +37,10 @@ def read_frame(path):
     return frame
 
 
+def format_polygon(polygon):
+    return " ".join([str(len(polygon))] + [f"{v:.2f}" for v in np.asarray(polygon).ravel()])
+
+
 def main(argv):
     if len(argv) != 3:
         sys.exit(f"usage: {argv[0]} FRAMES_DIR INIT_POLYGON_FILE  (scbt {scbt.__version__})")

@@ -22,6 +22,7 @@
 #include "scbt/io/frame_source.h"
 #include "scbt/reference/generic_cycle_stage.h"
 #include "scbt/tracker/tracker.h"
+#include "scbt/tracker/tracker_with_stage.h"
 
 namespace scbt {
 namespace {
@@ -197,8 +198,9 @@ BenchSequenceResult bench_sequence(const DatasetSequence& sequence, const BenchR
       plain.detector.kind = LineDetectorKind::kOpenCvEdLines;
     }
     // Stages 5-6 from reference/: BDSP on Boost.Graph, every candidate materialised.
-    runs.push_back(make_samples(
-        "straightforward", Tracker(plain, [] { return std::make_unique<GenericCycleStage>(); })));
+    runs.push_back(make_samples("straightforward", make_tracker(plain, [] {
+                                  return std::make_unique<GenericCycleStage>();
+                                })));
   }
 
   // Each configuration tracks the sequence in a pass of its own, as it would run alone, and

@@ -11,8 +11,8 @@
 #include <random>
 #include <sstream>
 
-#include "scbt/app/test_dataset.h"
 #include "scbt/geometry/polygon_io.h"
+#include "scbt/testing/test_dataset.h"
 
 namespace scbt {
 namespace {

@@ -11,9 +11,9 @@
 #include <sstream>
 
 #include "scbt/app/ci_requirement.h"
-#include "scbt/app/test_dataset.h"
 #include "scbt/eval/alignment_error.h"
 #include "scbt/geometry/polygon_io.h"
+#include "scbt/testing/test_dataset.h"
 
 namespace scbt {
 namespace {

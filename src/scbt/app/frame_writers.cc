@@ -46,6 +46,7 @@ std::string frame_note(const TrackResult& r, const cv::Size& size) {
         std::to_string(r.num_kept + r.num_dropped) + " near the boundary dropped");
   }
   if (r.reacquired) add("re-acquired: the lost object was found again");
+  if (r.step != SearchStep::kNone) add(std::string("step: ") + step_name(r.step));
   if (r.state == TrackState::kLost) {
     add("lost: the last confident boundary is repeated");
   } else if (r.held) {

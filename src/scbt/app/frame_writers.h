@@ -30,8 +30,8 @@ class ResultsWriter : public FrameWriter {
   int first_frame_ = 0;  // frame number of lines_[0]
 };
 
-// Why a frame was hard, in words ("" for an ordinary frame), for `scbt track --csv`: capped
-// segments, re-acquired, lost or held and why, boundary vertices outside the frame.
+// What happened in a frame, in words, for `scbt track --csv`: capped segments, re-acquired, the
+// search step that found the boundary, lost or held and why, boundary vertices outside the frame.
 std::string frame_note(const TrackResult& result, const cv::Size& frame_size);
 
 // A video written under a temporary name, opened on the first image and renamed on commit()

@@ -7,8 +7,8 @@
 
 #include <filesystem>
 
-#include "scbt/app/test_dataset.h"
 #include "scbt/geometry/polygon_io.h"
+#include "scbt/testing/test_dataset.h"
 
 namespace scbt {
 namespace {

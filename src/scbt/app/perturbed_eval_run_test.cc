@@ -6,8 +6,8 @@
 #include <filesystem>
 #include <opencv2/imgcodecs.hpp>
 
-#include "scbt/app/test_dataset.h"
 #include "scbt/geometry/polygon_io.h"
+#include "scbt/testing/test_dataset.h"
 
 namespace scbt {
 namespace {

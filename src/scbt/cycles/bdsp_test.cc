@@ -15,11 +15,11 @@
 #include <utility>
 
 #include "scbt/choice/boundary_choice.h"
-#include "scbt/graph/random_graphs.h"
 #include "scbt/graph/segment_graph.h"
 #include "scbt/reference/bdsp_generic.h"
 #include "scbt/reference/candidate_gate.h"
 #include "scbt/reference/shortest_paths.h"
+#include "scbt/testing/random_graphs.h"
 
 namespace scbt {
 namespace {

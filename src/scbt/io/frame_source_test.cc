@@ -11,7 +11,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "scbt/io/avi_test_util.h"
+#include "scbt/testing/avi_test_util.h"
 
 namespace scbt {
 namespace {

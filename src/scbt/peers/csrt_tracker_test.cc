@@ -5,7 +5,7 @@
 #include <opencv2/imgproc.hpp>
 #include <stdexcept>
 
-#include "scbt/peers/peers_test_util.h"
+#include "scbt/testing/peers_test_util.h"
 
 namespace scbt {
 namespace {

@@ -4,7 +4,7 @@
 
 #include <stdexcept>
 
-#include "scbt/peers/peers_test_util.h"
+#include "scbt/testing/peers_test_util.h"
 
 namespace scbt {
 namespace {

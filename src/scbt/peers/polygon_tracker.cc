@@ -7,6 +7,7 @@
 #include "scbt/peers/ecc_tracker.h"
 #include "scbt/peers/klt_tracker.h"
 #include "scbt/peers/rrc_tracker.h"
+#include "scbt/tracker/frame_checks.h"
 
 namespace scbt {
 namespace {

@@ -6,7 +6,7 @@
 #include <random>
 #include <stdexcept>
 
-#include "scbt/peers/peers_test_util.h"
+#include "scbt/testing/peers_test_util.h"
 
 namespace scbt {
 namespace {

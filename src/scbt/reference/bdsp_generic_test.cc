@@ -10,9 +10,9 @@
 #include <stdexcept>
 
 #include "scbt/cycles/bdsp.h"
-#include "scbt/graph/random_graphs.h"
 #include "scbt/graph/segment_graph.h"
 #include "scbt/reference/generic_cycle_stage.h"
+#include "scbt/testing/random_graphs.h"
 
 namespace scbt {
 namespace {

@@ -11,7 +11,7 @@
 #include <utility>
 #include <vector>
 
-#include "scbt/graph/random_graphs.h"
+#include "scbt/testing/random_graphs.h"
 
 namespace scbt {
 namespace {

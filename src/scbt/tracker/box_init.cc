@@ -5,7 +5,7 @@
 
 #include "scbt/choice/boundary_choice.h"
 #include "scbt/graph/segment_graph.h"
-#include "scbt/tracker/tracker.h"
+#include "scbt/tracker/tracker_impl.h"
 
 namespace scbt {
 
@@ -35,7 +35,7 @@ std::optional<Polygon> most_salient_boundary(const std::vector<Segment>& segment
   return polygon;
 }
 
-Polygon Tracker::init_from_box(const cv::Mat& frame, const cv::Rect& box) {
+Polygon Tracker::Impl::init_from_box(const cv::Mat& frame, const cv::Rect& box) {
   scale_thresholds_to_exposure(frame);
   cv::Mat gray;
   to_exposed_gray(frame, &gray);  // throws for a bad frame

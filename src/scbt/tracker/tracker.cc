@@ -1,5 +1,3 @@
-#include "scbt/tracker/tracker.h"
-
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -13,6 +11,7 @@
 #include "scbt/lines/line_detector.h"
 #include "scbt/tracker/frame_checks.h"
 #include "scbt/tracker/stage_clock.h"
+#include "scbt/tracker/tracker_impl.h"
 
 namespace scbt {
 namespace {
@@ -25,10 +24,52 @@ double own_smoothing(const TrackerOptions& options) {
 }  // namespace
 
 Tracker::Tracker(const TrackerOptions& options)
-    : Tracker(options, [] { return std::make_unique<FastCycleStage>(); }) {}
+    : Tracker(make_tracker(options, [] { return std::make_unique<FastCycleStage>(); })) {}
+Tracker::Tracker(std::unique_ptr<Impl> impl) : impl_(std::move(impl)) {}
+Tracker::~Tracker() = default;
+Tracker::Tracker(Tracker&&) noexcept = default;
+Tracker& Tracker::operator=(Tracker&&) noexcept = default;
 
-Tracker::Tracker(const TrackerOptions& options,
-                 const std::function<std::unique_ptr<CycleStage>()>& make_cycle_stage)
+void Tracker::init(const cv::Mat& frame, const Polygon& polygon) { impl_->init(frame, polygon); }
+Polygon Tracker::init_from_box(const cv::Mat& frame, const cv::Rect& box) {
+  return impl_->init_from_box(frame, box);
+}
+TrackResult Tracker::track(const cv::Mat& frame) { return impl_->track(frame); }
+bool Tracker::initialized() const { return impl_->initialized(); }
+const Polygon& Tracker::boundary() const { return impl_->boundary(); }
+const TrackerOptions& Tracker::options() const { return impl_->options(); }
+void Tracker::set_keep_debug(bool keep) { impl_->set_keep_debug(keep); }
+const TrackDebug& Tracker::debug() const { return impl_->debug(); }
+
+const char* step_name(SearchStep step) {
+  switch (step) {
+    case SearchStep::kNone:
+      return "none";
+    case SearchStep::kPredicted:
+      return "predicted";
+    case SearchStep::kUnmoved:
+      return "unmoved";
+    case SearchStep::kGrowth:
+      return "growth";
+    case SearchStep::kSmaller:
+      return "smaller";
+    case SearchStep::kImageMotion:
+      return "image motion";
+    case SearchStep::kInPlace:
+      return "in place";
+    case SearchStep::kMemory:
+      return "memory";
+    case SearchStep::kWholeFrame:
+      return "whole frame";
+  }
+  return "none";
+}
+
+Tracker make_tracker(const TrackerOptions& options, const MakeCycleStage& make_cycle_stage) {
+  return Tracker(std::make_unique<Tracker::Impl>(options, make_cycle_stage));
+}
+
+Tracker::Impl::Impl(const TrackerOptions& options, const MakeCycleStage& make_cycle_stage)
     : options_(options),
       appearance_(options.appearance),
       monitor_(options.loss),
@@ -42,11 +83,7 @@ Tracker::Tracker(const TrackerOptions& options,
   for (Attempt& a : attempts_) a.cycles = make_cycle_stage();
 }
 
-Tracker::~Tracker() = default;
-Tracker::Tracker(Tracker&&) noexcept = default;
-Tracker& Tracker::operator=(Tracker&&) noexcept = default;
-
-void Tracker::scale_thresholds_to_exposure(const cv::Mat& frame) {
+void Tracker::Impl::scale_thresholds_to_exposure(const cv::Mat& frame) {
   gradient_threshold_ = options_.detector.gradient_threshold;
   anchor_threshold_ = options_.detector.anchor_threshold;
   exposure_stretch_ = {};
@@ -69,13 +106,13 @@ void Tracker::scale_thresholds_to_exposure(const cv::Mat& frame) {
   detector_->set_edge_thresholds(gradient_threshold_, anchor_threshold_);
 }
 
-void Tracker::to_exposed_gray(const cv::Mat& part, cv::Mat* gray) const {
+void Tracker::Impl::to_exposed_gray(const cv::Mat& part, cv::Mat* gray) const {
   to_gray(part, gray);  // a buffer of the tracker's own, never the caller's frame
   if (exposure_stretch_.gain <= 1.0) return;
   apply_grey_stretch(exposure_stretch_, gray);
 }
 
-void Tracker::measure_edge_blur(const cv::Mat& gray, cv::Point window_tl) {
+void Tracker::Impl::measure_edge_blur(const cv::Mat& gray, cv::Point window_tl) {
   blur_frames_waited_ = 0;
   if (!options_.blur.adapt) return;
   // A clear step: twice the smallest one the detector sees (a Sobel response of the threshold is
@@ -90,7 +127,7 @@ void Tracker::measure_edge_blur(const cv::Mat& gray, cv::Point window_tl) {
       edge_blur_sigma_ > 0.0 ? edge_blur_sigma_ + weight * (sigma - edge_blur_sigma_) : sigma;
 }
 
-void Tracker::init(const cv::Mat& frame, const Polygon& polygon) {
+void Tracker::Impl::init(const cv::Mat& frame, const Polygon& polygon) {
   check_tracker_init(frame, polygon, &gray_);
   boundary_ = polygon;
   boundary_area_ = area(polygon);
@@ -118,8 +155,8 @@ void Tracker::init(const cv::Mat& frame, const Polygon& polygon) {
   keyframes_.clear();
 }
 
-void Tracker::attempt(const cv::Mat& frame, const Polygon& prior, Attempt* a, double min_similarity,
-                      bool adapt, double gate_area) {
+void Tracker::Impl::attempt(const cv::Mat& frame, const Polygon& prior, Attempt* a,
+                            double min_similarity, bool adapt, double gate_area) {
   a->num_dropped = 0;
   a->choice.reset();
   a->assessed = false;
@@ -202,7 +239,7 @@ void Tracker::attempt(const cv::Mat& frame, const Polygon& prior, Attempt* a, do
       a->stages.filter_ms + a->stages.graph_ms + a->stages.search_ms + a->stages.choice_ms;
 }
 
-double Tracker::camera_noise(const cv::Mat& gray) {
+double Tracker::Impl::camera_noise(const cv::Mat& gray) {
   // A camera's noise changes slowly: measured on the first window of every kNoiseInterval-th
   // frame that asks.
   constexpr int kNoiseInterval = 8;
@@ -213,8 +250,8 @@ double Tracker::camera_noise(const cv::Mat& gray) {
   return noise_sigma_;
 }
 
-const cv::Mat& Tracker::smooth_if_noisy(const cv::Mat& gray, cv::Mat* smoothed,
-                                        bool* thresholds_changed) {
+const cv::Mat& Tracker::Impl::smooth_if_noisy(const cv::Mat& gray, cv::Mat* smoothed,
+                                              bool* thresholds_changed) {
   const double sigma = smoothing_for_noise(camera_noise(gray), options_.adaptive_thresholds);
   if (sigma <= 0.0) return gray;
   cv::GaussianBlur(gray, *smoothed, cv::Size(0, 0), sigma);
@@ -229,11 +266,11 @@ const cv::Mat& Tracker::smooth_if_noisy(const cv::Mat& gray, cv::Mat* smoothed,
   return *smoothed;
 }
 
-bool Tracker::keeps_motion_reference() const {
+bool Tracker::Impl::keeps_motion_reference() const {
   return options_.recover_by_motion || (options_.predict_motion && options_.measure_motion);
 }
 
-void Tracker::remember_reference(const Attempt& a) {
+void Tracker::Impl::remember_reference(const Attempt& a) {
   // The reference is the window the image motion is measured against (recovery, prediction).
   if (!keeps_motion_reference()) return;
   settle_appearance();
@@ -243,7 +280,7 @@ void Tracker::remember_reference(const Attempt& a) {
   std::swap(gray_, reference_gray_);
 }
 
-void Tracker::report_attempt(const Attempt& a, TrackResult* result) {
+void Tracker::Impl::report_attempt(const Attempt& a, TrackResult* result) {
   result->num_detected = static_cast<int>(a.detected.size());
   result->num_kept = static_cast<int>(a.kept.size());
   result->num_dropped = a.num_dropped;
@@ -256,7 +293,7 @@ void Tracker::report_attempt(const Attempt& a, TrackResult* result) {
   }
 }
 
-bool Tracker::memory_overrides(Attempt* a, const MemoryFit& fit) {
+bool Tracker::Impl::memory_overrides(Attempt* a, const MemoryFit& fit) {
   // Too little of the object seen to place it from the memory alone.
   if (fit.visible < options_.min_visible) return false;
   if (!a->choice) return true;
@@ -270,7 +307,7 @@ bool Tracker::memory_overrides(Attempt* a, const MemoryFit& fit) {
   return memory_.departure_support(a->boundary, fit.outline, near, gray_, gray_roi_.tl()) < 0.7;
 }
 
-TrackResult Tracker::track(const cv::Mat& frame) {
+TrackResult Tracker::Impl::track(const cv::Mat& frame) {
   if (!initialized()) throw std::logic_error("Tracker::track called before init");
   if (frame.empty()) to_gray(frame, &gray_);  // throws
   check_frame_size(frame, frame_size_);
@@ -290,6 +327,7 @@ TrackResult Tracker::track(const cv::Mat& frame) {
     boundary_ = fit.outline;
     boundary_area_ = area(boundary_);
     result.from_memory = true;
+    result.step = SearchStep::kMemory;
     result.confidence = fit.visible;
     motion_.update(boundary_);
     result.state = monitor_.update(boundary_, result.confidence, false, result.evidence);
@@ -337,9 +375,9 @@ TrackResult Tracker::track(const cv::Mat& frame) {
     motion_.update_held();
   }
   // A found boundary's descriptor came with its evidence (assess): the monitor needs no other.
-  result.state =
-      monitor_.update(boundary_, result.confidence, result.held, result.evidence,
-                      result.held ? nullptr : &a->descriptor, result.recovered || found_smaller_);
+  result.state = monitor_.update(boundary_, result.confidence, result.held, result.evidence,
+                                 result.held ? nullptr : &a->descriptor,
+                                 result.recovered || result.step == SearchStep::kSmaller);
   if (result.state == TrackState::kTracking) {
     keyframes_.offer(frame, boundary_);
     if (options_.shape_weight > 0.0) shape_memory_.remember(boundary_);
@@ -349,6 +387,7 @@ TrackResult Tracker::track(const cv::Mat& frame) {
     // frame, the held boundary stays (the last found, nearest to where the object went).
     boundary_ = monitor_.latest_confident();
     boundary_area_ = area(boundary_);
+    result.step = SearchStep::kNone;  // the boundary reported is no step's
   }
   if (result.state == TrackState::kLost) lost_output_ = boundary_;
 

@@ -1,30 +1,60 @@
 // The per-frame salient closed boundary tracker: detect -> filter -> gap fill -> BDSP -> choose.
 #pragma once
 
-#include <functional>
 #include <memory>
 #include <opencv2/core/mat.hpp>
-#include <optional>
+#include <vector>
 
-#include "scbt/choice/boundary_choice.h"
 #include "scbt/geometry/polygon.h"
-#include "scbt/geometry/shape_descriptor.h"
 #include "scbt/graph/segment_graph.h"
-#include "scbt/lines/exposure.h"
-#include "scbt/tracker/contrast_profile.h"
-#include "scbt/tracker/cycle_stage.h"
-#include "scbt/tracker/frame_checks.h"
-#include "scbt/tracker/motion_estimate.h"
-#include "scbt/tracker/motion_model.h"
-#include "scbt/tracker/object_memory.h"
-#include "scbt/tracker/reacquire.h"
-#include "scbt/tracker/reacquire_view_change.h"
-#include "scbt/tracker/scene_keyframes.h"
-#include "scbt/tracker/shape_memory.h"
+#include "scbt/tracker/confidence.h"
 #include "scbt/tracker/track_state.h"
 #include "scbt/tracker/tracker_options.h"
 
 namespace scbt {
+
+// The steps of a frame's search, in the order they run; a frame reports the step whose boundary
+// it took (TrackResult::step). While tracking, a step after the first runs only when the ones
+// before it found nothing (kUnmoved: nothing trusted), and its boundary is taken when it passes
+// the step's test:
+//   kPredicted    where the boundary is, or where its motion puts it (predict_motion,
+//                 measure_motion); a weak frame is searched again with the other thresholds
+//                 (AdaptiveThresholdOptions::retry_weak_frames). Taken as found.
+//   kUnmoved      where the boundary was, when the prediction moved it and found nothing trusted
+//                 (fall_back_unmoved). Taken when trusted and of the reference shape.
+//   kGrowth       with the size its recent growth predicts, when that is beyond the area gate
+//                 (and the image confirms it, confirm_motion). Taken when a cycle passes the gate.
+//   kSmaller      one area-gate step smaller (gate_sustained_shrink): a fast receding object.
+//                 Taken when trusted, of the reference shape, and the outline it shrank from is
+//                 gone.
+//   kImageMotion  where the image around it moved since it was last tracked (recover_by_motion),
+//                 a move of at least half the search band. Taken when a cycle passes the gate.
+//   kMemory       the remembered outline fitted to the visible part of the object
+//                 (TrackerOptions::object_memory), when the step above found no cycle, or one that
+//                 departs from the fitted outline along part of it without the object's edges
+//                 there; taken when at least TrackerOptions::min_visible of it is seen.
+// While the object is lost (TrackState::kLost):
+//   kInPlace      the tracking steps above, their boundary taken when it matches the last
+//                 confident one with the tracking bar (LossOptions::tracking_confidence).
+//   kWholeFrame   the last confident outline placed over the whole frame (where it was last
+//                 matched and seen, where the scene keyframes put it, the best-scoring places, then
+//                 other sizes and views), every placement searched and the best match taken once
+//                 found LossOptions::confirm_frames times in a row.
+enum class SearchStep {
+  kNone,  // no boundary found: held, or lost
+  kPredicted,
+  kUnmoved,
+  kGrowth,
+  kSmaller,
+  kImageMotion,
+  kMemory,
+  kInPlace,
+  kWholeFrame,
+};
+
+// "predicted", "unmoved", "growth", "smaller", "image motion", "memory", "in place",
+// "whole frame", "none".
+const char* step_name(SearchStep step);
 
 // Where the grouping time of one frame went (milliseconds; a recovery search adds to each).
 struct StageTimes {
@@ -36,9 +66,10 @@ struct StageTimes {
 };
 
 struct TrackResult {
-  Polygon boundary;        // the tracked boundary (the previous one when held)
-  bool held = false;       // no admissible candidate: the previous boundary was kept
-  bool recovered = false;  // found again where image motion moved it (after a miss)
+  Polygon boundary;                     // the tracked boundary (the previous one when held)
+  bool held = false;                    // no admissible candidate: the previous boundary was kept
+  bool recovered = false;               // found again where image motion moved it (after a miss)
+  SearchStep step = SearchStep::kNone;  // the step of the search that found `boundary`
   // How far to trust `boundary` (confidence.h; 0 when held or lost) and what that makes of the
   // frame (track_state.h). While lost, `boundary` is the last confident one and `held` is set.
   TrackState state = TrackState::kTracking;
@@ -75,11 +106,8 @@ class Tracker {
  public:
   // Throws std::invalid_argument when the options are invalid.
   explicit Tracker(const TrackerOptions& options = {});
-  // Runs stages 5-6 with the stages `make_cycle_stage` makes instead of FastCycleStage (how
-  // `scbt bench` assembles the straightforward pipeline from reference/).
-  Tracker(const TrackerOptions& options,
-          const std::function<std::unique_ptr<CycleStage>()>& make_cycle_stage);
   ~Tracker();
+  // A moved-from tracker may only be assigned to or destroyed.
   Tracker(Tracker&&) noexcept;
   Tracker& operator=(Tracker&&) noexcept;
 
@@ -96,178 +124,20 @@ class Tracker {
   // Frames, in every call, are only read, and only during it: none is written or kept.
   TrackResult track(const cv::Mat& frame);
 
-  bool initialized() const { return !boundary_.empty(); }
-  const Polygon& boundary() const { return boundary_; }
-  const TrackerOptions& options() const { return options_; }
+  bool initialized() const;
+  const Polygon& boundary() const;
+  const TrackerOptions& options() const;
   // Filled by track() when enabled; off by default to keep the hot path lean.
-  void set_keep_debug(bool keep) { keep_debug_ = keep; }
-  const TrackDebug& debug() const { return debug_; }
+  void set_keep_debug(bool keep);
+  const TrackDebug& debug() const;
+
+  // The state and the stages (tracker_impl.h): private, so that they change without breaking
+  // the ABI.
+  class Impl;
+  explicit Tracker(std::unique_ptr<Impl> impl);
 
  private:
-  TrackerOptions options_;
-  std::unique_ptr<LineDetector> detector_;
-  Polygon boundary_;
-  double boundary_area_ = 0.0;
-  cv::Size frame_size_;
-  cv::Mat gray_;
-  cv::Rect gray_roi_;      // the window of the frame gray_ holds
-  cv::Mat smoothed_gray_;  // gray_ smoothed for a noisy frame (AdaptiveThresholdOptions)
-  // The grey window around the boundary the last time it was tracked, for re-finding it by
-  // image motion when it is lost (TrackerOptions::recover_by_motion).
-  cv::Mat reference_gray_;
-  cv::Rect reference_roi_;
-  MotionModel motion_;    // predicts where the boundary goes next (TrackerOptions::predict_motion)
-  Polygon predicted_;     // where this frame's search looks (reused buffer)
-  Polygon extrapolated_;  // where the boundary's last velocity puts it (place_by_image_motion)
-  BoundaryAppearance appearance_;  // confirms predictions (TrackerOptions::confirm_motion)
-  // A prediction needs confirming on few frames: the last tracked boundary's appearance is then
-  // read from the motion reference (reference_gray_, kept anyway) rather than on every frame.
-  bool appearance_pending_ = false;
-  Polygon appearance_boundary_;  // the boundary whose appearance is pending (frame coordinates)
-
-  // One pass of the per-frame pipeline searching around `prior`. Two are kept (the first try
-  // and a recovery search) and reused frame to frame, so that steady-state tracking allocates
-  // next to nothing.
-  struct Attempt {
-    cv::Rect roi;
-    EdgeThresholds thresholds;  // the detector's thresholds for this attempt
-    std::vector<Segment> detected;
-    std::vector<Segment> kept;
-    std::vector<double> kept_distances;  // the filter's, 3 per kept segment (segment_filter.h)
-    int num_dropped = 0;
-    SegmentGraph graph;
-    std::unique_ptr<CycleStage> cycles;  // stages 5-6
-    std::optional<BoundaryChoice> choice;
-    double line_ms = 0.0;
-    double grouping_ms = 0.0;
-    StageTimes stages;
-    // Filled by assess(): the chosen cycle, its evidence and confidence.
-    bool assessed = false;
-    Polygon boundary;
-    BoundaryEvidence evidence;
-    ShapeDescriptor descriptor;  // of boundary
-    double confidence = 0.0;
-  };
-  // `adapt`: with thresholds (and smoothing) adapted to this window (retry_weak). `gate_area`
-  // (when > 0): the area the gate (Eq. 2) compares candidates with instead of the prior's.
-  void attempt(const cv::Mat& frame, const Polygon& prior, Attempt* a, double min_similarity,
-               bool adapt = false, double gate_area = 0.0);
-  // A tracking frame's search around the boundary: where it is (or its motion predicts it), then
-  // with its predicted growth, then one gate step smaller, then where the image moved it. Returns
-  // the attempt to use (its choice empty when nothing qualified); `result` gets the times.
-  Attempt* search(const cv::Mat& frame, TrackResult* result);
-  // Whether search() took a boundary below the area gate (a receding object): it is tracked only
-  // with the last confident shape and inside level, as a re-found one.
-  bool found_smaller_ = false;
-  // Attempt a's chosen cycle (if any), its evidence against `previous` and its confidence; the
-  // grey window gray_ must still be a's.
-  void assess(Attempt* a, const Polygon& previous) const;
-  // AdaptiveThresholdOptions::retry_weak_frames: `first` or, when it was weak, the search again
-  // with the other thresholds (adapted or published) if that found a more confident boundary.
-  // The retry searches around `prior` (first's, with first's `gate_area`) into `retry`.
-  Attempt* retry_weak(const cv::Mat& frame, Attempt* first, const Polygon& prior, Attempt* retry,
-                      TrackResult* result, double gate_area);
-  // Whether an assessed attempt's boundary may be taken: trusted (LossOptions::tracking_confidence)
-  // and, found with `adapted` thresholds, of the reference shape
-  // (LossOptions::match_shape_distance).
-  bool trusted(const Attempt& a, bool adapted) const;
-  bool adapted_first_ = false;  // the first search of a frame uses adapted thresholds
-  // This frame's exposure stretch (ExposureOptions) and published thresholds scaled to its
-  // blur: what adapted thresholds start from and detection returns to.
-  void scale_thresholds_to_exposure(const cv::Mat& frame);
-  GreyStretch exposure_stretch_;
-  // `part` of this frame (or the frame) in grey, stretched to the frame's exposure: every grey
-  // window the tracker detects, measures or compares on.
-  void to_exposed_gray(const cv::Mat& part, cv::Mat* gray) const;
-  int gradient_threshold_;
-  int anchor_threshold_;
-  // The gradient threshold scaled to the exposure only (the gain the stretch leaves): a blurred
-  // step keeps its height, so the smallest grey step counted as an edge (the confidence's, the
-  // blur estimate's) follows this.
-  int step_threshold_;
-  // TrackerOptions::blur: the running estimate of the edge spread (px) of the confidently tracked
-  // boundaries (< 0: none yet), which scales the thresholds (edge_blur_gain), and its update from
-  // `gray` (the window at `window_tl`).
-  double edge_blur_sigma_ = -1.0;
-  int blur_frames_waited_ = 0;  // confidently tracked frames since the last estimate
-  void measure_edge_blur(const cv::Mat& gray, cv::Point window_tl);
-  // TrackerOptions::smooth_noisy_frames: `gray` smoothed into *smoothed when the camera's noise
-  // (Immerkaer's estimate, refreshed every few frames) calls for it, the detector's thresholds
-  // then lowered with the smoothing (*thresholds_changed set); otherwise `gray`.
-  const cv::Mat& smooth_if_noisy(const cv::Mat& gray, cv::Mat* smoothed, bool* thresholds_changed);
-  // The camera's noise (grey levels), estimated again on `gray` (a window of this frame) when the
-  // last estimate is a few frames old.
-  double camera_noise(const cv::Mat& gray);
-  double noise_sigma_ = -1.0;  // grey levels; < 0: estimated on the next window
-  int frames_since_noise_estimate_ = 0;
-  // TrackerOptions::measure_motion: predicted_ becomes the boundary moved by the image motion
-  // around it since the last tracked frame, when its recent motion says it moves
-  // (tracker_predict.cc).
-  void place_by_image_motion(const cv::Mat& frame);
-  // Whether `moved` (a predicted placement of the boundary) agrees with its appearance better
-  // than `unmoved` does, and at least by TrackerOptions::min_motion_agreement.
-  bool confirmed(const cv::Mat& frame, const Polygon& moved, const Polygon& unmoved);
-  // After boundary_ was tracked on `frame`: the appearance that confirms the next predictions,
-  // read now, or left pending when the motion reference keeps this frame's window.
-  void remember_appearance(const cv::Mat& frame);
-  // Reads a pending appearance from the motion reference (before the reference moves on).
-  void settle_appearance();
-  // Whether remember_reference keeps the windows the image motion is measured against.
-  bool keeps_motion_reference() const;
-  static void add_retry_times(const Attempt& retry, TrackResult* result);
-  // The evidence (confidence.h) of `chosen`, the cycle attempt `a` chose around `previous`; the
-  // grey window gray_ must still be a's (tracker_lost.cc). `descriptor`, when given, gets the
-  // shape_descriptor of `chosen`.
-  BoundaryEvidence evidence_of(const Attempt& a, const Polygon& chosen, const Polygon& previous,
-                               ShapeDescriptor* descriptor = nullptr) const;
-  // Whether `left` (a boundary the object may have shrunk away from) holds fewer clear edges in
-  // attempt a's window than a's chosen boundary (assessed): the object's outline left it, rather
-  // than a smaller cycle inside it being found while it is still there.
-  bool outline_left(const Attempt& a, const Polygon& left) const;
-  // On a surprising frame after a tracked one (held, confidence below tracking, or a shape change
-  // beyond a match): whether the view was cut (LossOptions::cut_correlation), told to the monitor.
-  // Needs the motion reference unchanged (tracker_lost.cc).
-  void check_view_cut(const cv::Mat& frame, const TrackResult& result);
-  // A frame while the object is lost: search for it, near its last position, then anywhere.
-  TrackResult track_lost(const cv::Mat& frame);
-  // The first search while lost (tracker_resume.cc): tracking's own search, with the tracking
-  // bar. True (and *result filled) when the object was found there.
-  bool resume_in_place(const cv::Mat& frame, TrackResult* result);
-  // Tracking starts again from `boundary`, found in `frame` by either search while lost: the
-  // state, the last confident boundary, the motion model and its references restart there.
-  // `result` gets the state and the boundary; its evidence must already be the boundary's.
-  void resume_tracking_from(const cv::Mat& frame, Polygon boundary, TrackResult* result);
-  // After a frame whose boundary was found by attempt `a`: its grey window becomes the motion
-  // reference (TrackerOptions::recover_by_motion).
-  void remember_reference(const Attempt& a);
-  // The statistics (and, when kept, the debug view) of the attempt whose boundary is reported.
-  void report_attempt(const Attempt& a, TrackResult* result);
-  // [0] and [1]: the search where the boundary is predicted (and its threshold retry or a
-  // recovery); [2] and [3]: where it was, when a prediction found nothing trusted.
-  Attempt attempts_[4];
-  LossMonitor monitor_;
-  Reacquirer reacquirer_;
-  SceneKeyframes keyframes_;     // confident views of the object's surroundings, for the search
-  ViewChangeMatch view_change_;  // matches seen from another distance or angle, while lost
-  cv::Mat search_gray_;          // the whole frame in grey, while lost
-  cv::Mat cut_gray_;             // the motion reference's window in this frame (check_view_cut)
-  TranslationEstimator translation_;  // image motion since the reference, its buffers reused
-  // A cycle that matched while lost, waiting for LossOptions::confirm_frames matches in a row.
-  Polygon pending_;
-  // The output while lost: the boundary when the object was declared lost. boundary_ meanwhile
-  // follows whatever tracking's own search finds (tracker_resume.cc).
-  Polygon lost_output_;
-  int pending_matches_ = 0;
-  SegmentGraph match_graph_;  // the graph the best match while lost was found in
-  int match_kept_ = 0;
-  StableChooser chooser_;     // its buffers and distance cache are reused frame to frame
-  ShapeMemory shape_memory_;  // the shape the choice weighs candidates against
-  ObjectMemory memory_;       // the object's outline and edges (TrackerOptions::object_memory)
-  // Whether this frame's fit of the memory should replace attempt a's choice (none, or one that
-  // departs from the object along part of its outline).
-  bool memory_overrides(Attempt* a, const MemoryFit& fit);
-  bool keep_debug_ = false;
-  TrackDebug debug_;
+  std::unique_ptr<Impl> impl_;
 };
 
 }  // namespace scbt

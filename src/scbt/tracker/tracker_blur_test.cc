@@ -9,7 +9,7 @@
 #include <sstream>
 #include <string>
 
-#include "scbt/tracker/hexagon_pan_test_util.h"
+#include "scbt/testing/hexagon_pan_test_util.h"
 
 namespace scbt {
 namespace {

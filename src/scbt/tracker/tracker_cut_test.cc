@@ -8,8 +8,8 @@
 #include <tuple>
 
 #include "scbt/synthetic/scene.h"
+#include "scbt/testing/tracker_test_util.h"
 #include "scbt/tracker/tracker.h"
-#include "scbt/tracker/tracker_test_util.h"
 
 namespace scbt {
 namespace {

@@ -9,8 +9,8 @@
 #include <stdexcept>
 
 #include "scbt/synthetic/scene.h"
-#include "scbt/tracker/dim_camera_test_util.h"
-#include "scbt/tracker/hexagon_pan_test_util.h"
+#include "scbt/testing/dim_camera_test_util.h"
+#include "scbt/testing/hexagon_pan_test_util.h"
 
 namespace scbt {
 namespace {

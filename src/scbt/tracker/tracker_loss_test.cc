@@ -92,6 +92,12 @@ TEST_P(TrackerLossTest, LostDuringTheGapAndFoundAgainAfterIt) {
   }
   ASSERT_GE(found, 0);
   EXPECT_LT(found - run.scene.first_back, 5);
+  // Found again by a search while lost, and said so.
+  if (run.results[found - 1].state == TrackState::kLost) {
+    EXPECT_TRUE(run.results[found].step == SearchStep::kInPlace ||
+                run.results[found].step == SearchStep::kWholeFrame)
+        << step_name(run.results[found].step);
+  }
   double sum = 0.0;
   for (int k = found; k < n; ++k) {
     sum += mean_boundary_distance(run.results[k].boundary, run.scene.frames[k].truth);

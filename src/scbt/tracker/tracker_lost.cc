@@ -6,7 +6,7 @@
 
 #include "scbt/lines/line_detector.h"
 #include "scbt/tracker/stage_clock.h"
-#include "scbt/tracker/tracker.h"
+#include "scbt/tracker/tracker_impl.h"
 #include "scbt/tracker/view_cut.h"
 
 namespace scbt {
@@ -25,8 +25,9 @@ constexpr double kCoarseScaleStep = 1.2;
 
 }  // namespace
 
-BoundaryEvidence Tracker::evidence_of(const Attempt& a, const Polygon& chosen,
-                                      const Polygon& previous, ShapeDescriptor* descriptor) const {
+BoundaryEvidence Tracker::Impl::evidence_of(const Attempt& a, const Polygon& chosen,
+                                            const Polygon& previous,
+                                            ShapeDescriptor* descriptor) const {
   const double gap_length = a.choice->cost * a.cycles->area(a.choice->index);
   BoundaryEvidence evidence =
       measure_evidence(chosen, gap_length, previous, monitor_.reference(), gray_, a.roi.tl(),
@@ -35,12 +36,12 @@ BoundaryEvidence Tracker::evidence_of(const Attempt& a, const Polygon& chosen,
   return evidence;
 }
 
-bool Tracker::outline_left(const Attempt& a, const Polygon& left) const {
+bool Tracker::Impl::outline_left(const Attempt& a, const Polygon& left) const {
   const EdgeSamples there = sample_edges(left, gray_, a.roi.tl(), min_edge_step(step_threshold_));
   return there.support < a.evidence.edge_support;
 }
 
-void Tracker::check_view_cut(const cv::Mat& frame, const TrackResult& result) {
+void Tracker::Impl::check_view_cut(const cv::Mat& frame, const TrackResult& result) {
   const LossOptions& loss = options_.loss;
   const bool surprise = result.held || result.confidence < loss.tracking_confidence ||
                         result.evidence.shape_change > loss.match_shape_distance;
@@ -60,10 +61,11 @@ void Tracker::check_view_cut(const cv::Mat& frame, const TrackResult& result) {
   }
 }
 
-TrackResult Tracker::track_lost(const cv::Mat& frame) {
+TrackResult Tracker::Impl::track_lost(const cv::Mat& frame) {
   TrackResult result;
-  // After a cut of the view, where the object was says nothing: only the whole-frame search.
+  // kInPlace. After a cut of the view, where the object was says nothing: only the whole frame.
   if (!monitor_.after_cut() && resume_in_place(frame, &result)) return result;
+  // kWholeFrame: the last confident outline placed over the frame, every placement searched.
   const double in_place_line_ms = result.line_ms, in_place_grouping_ms = result.grouping_ms;
   result = TrackResult();
   result.state = TrackState::kLost;
@@ -76,6 +78,43 @@ TrackResult Tracker::track_lost(const cv::Mat& frame) {
   result.line_ms = in_place_line_ms + elapsed_ms(line_start);
 
   const Clock::time_point rank_start = Clock::now();
+  std::vector<Placement> placements;
+  const size_t beyond_count = place_over_frame(segments, &placements);
+  result.stages.recovery_ms = elapsed_ms(rank_start);
+  result.grouping_ms = in_place_grouping_ms + result.stages.recovery_ms;
+
+  Polygon match = best_match(frame, placements, beyond_count, &result);
+  result.num_detected = static_cast<int>(segments.size());
+  if (keep_debug_) debug_.detected = segments;
+  if (match.empty()) {
+    pending_.clear();
+    pending_matches_ = 0;
+    result.confidence = 0.0;
+    result.boundary = lost_output_;
+    return result;
+  }
+  const bool same_place = !pending_.empty() && cv::norm(centroid(match) - centroid(pending_)) <=
+                                                   0.25 * std::sqrt(area(match));
+  pending_matches_ = same_place ? pending_matches_ + 1 : 1;
+  pending_ = match;
+  if (pending_matches_ < options_.loss.confirm_frames) {
+    // Not yet trusted: still lost, the last confident boundary stays the output, and with it
+    // no confidence (the match's own is not the output's).
+    result.confidence = 0.0;
+    result.boundary = lost_output_;
+    return result;
+  }
+  result.num_kept = match_kept_;
+  result.num_vertices = match_graph_.num_vertices();
+  result.num_edges = match_graph_.num_edges();
+  if (keep_debug_) debug_.graph = match_graph_;
+  result.step = SearchStep::kWholeFrame;
+  resume_tracking_from(frame, std::move(match), &result);
+  return result;
+}
+
+size_t Tracker::Impl::place_over_frame(const std::vector<Segment>& segments,
+                                       std::vector<Placement>* placements) {
   const LossOptions& loss = options_.loss;
   PlacementOptions placement_options;
   placement_options.min_scale = loss.min_scale;
@@ -83,8 +122,7 @@ TrackResult Tracker::track_lost(const cv::Mat& frame) {
   placement_options.near_tries = loss.near_tries;
   placement_options.frame_tries = loss.frame_tries;
   reacquirer_.set_segments(segments, frame_size_, 0.5 * options_.filter_distance);
-  std::vector<Placement> placements =
-      reacquirer_.rank(monitor_.last_confident(), placement_options);
+  *placements = reacquirer_.rank(monitor_.last_confident(), placement_options);
   // Nearer or further than the moderate scales: a few more placements, whose matches must also
   // look like the object's last kept view (reacquire_view_change.h).
   cv::Mat view;
@@ -106,7 +144,7 @@ TrackResult Tracker::track_lost(const cv::Mat& frame) {
     for (const PlacementOptions* band : {&larger, &smaller}) {
       if (band->min_scale > band->max_scale) continue;
       const std::vector<Placement> beyond = reacquirer_.rank(monitor_.last_confident(), *band);
-      placements.insert(placements.end(), beyond.begin(), beyond.end());
+      placements->insert(placements->end(), beyond.begin(), beyond.end());
       beyond_count += beyond.size();
     }
     // Seen from a little lower or higher: the outline flatter or rounder by the square root of
@@ -120,7 +158,7 @@ TrackResult Tracker::track_lost(const cv::Mat& frame) {
     for (double factor : {1.0 / f, f}) {
       const std::vector<Placement> beyond =
           reacquirer_.rank(foreshortened(monitor_.last_confident(), factor), turned);
-      placements.insert(placements.end(), beyond.begin(), beyond.end());
+      placements->insert(placements->end(), beyond.begin(), beyond.end());
       beyond_count += beyond.size();
     }
   }
@@ -131,15 +169,19 @@ TrackResult Tracker::track_lost(const cv::Mat& frame) {
   if (registered) {
     std::vector<Placement> around = reacquirer_.rank(registered->boundary, placement_options);
     around.insert(around.begin(), Placement{registered->boundary, 0.0, true, registered->scale});
-    placements.insert(placements.begin(), around.begin(), around.end());
+    placements->insert(placements->begin(), around.begin(), around.end());
   }
   // First where it was last seen, as it was (a blank or occluded stretch rarely moves it far),
   // and before that last frame's match, where it was found.
-  placements.insert(placements.begin(), Placement{monitor_.latest_confident(), 0.0, true, 1.0});
-  if (!pending_.empty()) placements.insert(placements.begin(), Placement{pending_, 0.0, true, 1.0});
-  result.stages.recovery_ms = elapsed_ms(rank_start);
-  result.grouping_ms = in_place_grouping_ms + result.stages.recovery_ms;
+  placements->insert(placements->begin(), Placement{monitor_.latest_confident(), 0.0, true, 1.0});
+  if (!pending_.empty())
+    placements->insert(placements->begin(), Placement{pending_, 0.0, true, 1.0});
+  return beyond_count;
+}
 
+Polygon Tracker::Impl::best_match(const cv::Mat& frame, const std::vector<Placement>& placements,
+                                  size_t beyond_count, TrackResult* result) {
+  const LossOptions& loss = options_.loss;
   // Every placement is searched and the best match kept (a look-alike found first must not hide
   // the object found later); last frame's match found again is taken at once.
   const double similarity = std::min(options_.min_area_similarity, kSearchSimilarity);
@@ -149,9 +191,9 @@ TrackResult Tracker::track_lost(const cv::Mat& frame) {
   for (size_t i = 0; i < placements.size(); ++i) {
     const Placement& placement = placements[i];
     attempt(frame, placement.outline, a, similarity);
-    result.line_ms += a->line_ms;
-    result.grouping_ms += a->grouping_ms;
-    result.num_candidates += a->cycles->num_candidates();
+    result->line_ms += a->line_ms;
+    result->grouping_ms += a->grouping_ms;
+    result->num_candidates += a->cycles->num_candidates();
     if (!a->choice) continue;
     Polygon cycle = a->cycles->polygon(a->graph, a->choice->index);
     const BoundaryEvidence evidence = evidence_of(*a, cycle, placement.outline);
@@ -181,42 +223,17 @@ TrackResult Tracker::track_lost(const cv::Mat& frame) {
         shape / loss.match_shape_distance + (1.0 - confidence) + (view_changed ? 2.0 : 0.0);
     if (!match.empty() && score >= best_score) continue;
     best_score = score;
-    result.evidence = evidence;
-    result.confidence = confidence;
-    result.cost = a->choice->cost;
-    result.area_similarity =
+    result->evidence = evidence;
+    result->confidence = confidence;
+    result->cost = a->choice->cost;
+    result->area_similarity =
         area_similarity(area(monitor_.last_confident()), a->cycles->area(a->choice->index));
     match = std::move(cycle);
     match_graph_ = a->graph;
     match_kept_ = static_cast<int>(a->kept.size());
     if (i == 0 && !pending_.empty() && !view_changed) break;
   }
-  result.num_detected = static_cast<int>(segments.size());
-  if (keep_debug_) debug_.detected = segments;
-  if (match.empty()) {
-    pending_.clear();
-    pending_matches_ = 0;
-    result.confidence = 0.0;
-    result.boundary = lost_output_;
-    return result;
-  }
-  const bool same_place = !pending_.empty() && cv::norm(centroid(match) - centroid(pending_)) <=
-                                                   0.25 * std::sqrt(area(match));
-  pending_matches_ = same_place ? pending_matches_ + 1 : 1;
-  pending_ = match;
-  if (pending_matches_ < loss.confirm_frames) {
-    // Not yet trusted: still lost, the last confident boundary stays the output, and with it
-    // no confidence (the match's own is not the output's).
-    result.confidence = 0.0;
-    result.boundary = lost_output_;
-    return result;
-  }
-  result.num_kept = match_kept_;
-  result.num_vertices = match_graph_.num_vertices();
-  result.num_edges = match_graph_.num_edges();
-  if (keep_debug_) debug_.graph = match_graph_;
-  resume_tracking_from(frame, std::move(match), &result);
-  return result;
+  return match;
 }
 
 }  // namespace scbt

@@ -3,12 +3,12 @@
 #include <opencv2/core.hpp>
 
 #include "scbt/lines/line_detector.h"
-#include "scbt/tracker/motion_estimate.h"
-#include "scbt/tracker/tracker.h"
+#include "scbt/motion/motion_estimate.h"
+#include "scbt/tracker/tracker_impl.h"
 
 namespace scbt {
 
-void Tracker::place_by_image_motion(const cv::Mat& frame) {
+void Tracker::Impl::place_by_image_motion(const cv::Mat& frame) {
   predicted_ = boundary_;
   // The boundary's last velocity only decides whether to measure: a fast camera's steps recur
   // from frame to frame, while a noisy frame's jump (another cycle chosen) says nothing of where

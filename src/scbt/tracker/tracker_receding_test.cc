@@ -10,7 +10,7 @@
 #include <opencv2/imgproc.hpp>
 #include <vector>
 
-#include "scbt/tracker/hexagon_scene_test_util.h"
+#include "scbt/testing/hexagon_scene_test_util.h"
 #include "scbt/tracker/tracker.h"
 
 namespace scbt {

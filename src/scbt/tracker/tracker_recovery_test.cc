@@ -5,7 +5,7 @@
 #include <opencv2/imgproc.hpp>
 #include <tuple>
 
-#include "scbt/tracker/hexagon_scene_test_util.h"
+#include "scbt/testing/hexagon_scene_test_util.h"
 #include "scbt/tracker/tracker.h"
 
 namespace scbt {
@@ -54,10 +54,12 @@ TEST_P(RecoveryTest, FollowsACameraSwingBeyondTheBand) {
     if (recover) {
       EXPECT_FALSE(moved.held);
       EXPECT_TRUE(moved.recovered);
+      EXPECT_EQ(moved.step, SearchStep::kImageMotion);
       EXPECT_LT(mean_vertex_distance(moved.boundary, truth_after), 2.0);
     } else {
       EXPECT_TRUE(moved.held);
       EXPECT_FALSE(moved.recovered);
+      EXPECT_EQ(moved.step, SearchStep::kNone);
     }
   }
 }

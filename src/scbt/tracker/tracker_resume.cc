@@ -3,11 +3,11 @@
 #include <opencv2/core.hpp>
 
 #include "scbt/lines/line_detector.h"
-#include "scbt/tracker/tracker.h"
+#include "scbt/tracker/tracker_impl.h"
 
 namespace scbt {
 
-bool Tracker::resume_in_place(const cv::Mat& frame, TrackResult* result) {
+bool Tracker::Impl::resume_in_place(const cv::Mat& frame, TrackResult* result) {
   // On a poor camera (dim, noisy, blurred) the object is often missed a few frames in a row
   // without having gone anywhere; the whole-frame search's higher bar (it tests many more cycles)
   // would then keep it lost for as long as the image stays poor.
@@ -28,12 +28,14 @@ bool Tracker::resume_in_place(const cv::Mat& frame, TrackResult* result) {
   result->confidence = confidence;
   result->cost = a->choice->cost;
   result->area_similarity = a->choice->similarity;
+  result->step = SearchStep::kInPlace;
   report_attempt(*a, result);
   resume_tracking_from(frame, std::move(cycle), result);
   return true;
 }
 
-void Tracker::resume_tracking_from(const cv::Mat& frame, Polygon boundary, TrackResult* result) {
+void Tracker::Impl::resume_tracking_from(const cv::Mat& frame, Polygon boundary,
+                                         TrackResult* result) {
   result->state = TrackState::kTracking;
   result->held = false;
   result->reacquired = true;

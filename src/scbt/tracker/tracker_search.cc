@@ -1,18 +1,17 @@
-// A tracking frame's search (Tracker::search): where the boundary is or its motion predicts it,
-// the weak-frame retry, where it was, its predicted growth, one gate step smaller, and where the
-// image moved it; the checks each second search's boundary must pass, and the appearance that
-// confirms a prediction.
+// A tracking frame's search (Tracker::Impl::search): the steps of tracker.h's SearchStep, in
+// order, each a function of one signature; the weak-frame retry they share, the checks a second
+// search's boundary must pass, and the appearance that confirms a prediction.
 #include <opencv2/core.hpp>
 #include <optional>
 
 #include "scbt/lines/line_detector.h"
-#include "scbt/tracker/motion_estimate.h"
+#include "scbt/motion/motion_estimate.h"
 #include "scbt/tracker/stage_clock.h"
-#include "scbt/tracker/tracker.h"
+#include "scbt/tracker/tracker_impl.h"
 
 namespace scbt {
 
-void Tracker::add_retry_times(const Attempt& retry, TrackResult* result) {
+void Tracker::Impl::add_retry_times(const Attempt& retry, TrackResult* result) {
   result->line_ms += retry.line_ms;
   result->grouping_ms += retry.grouping_ms;
   result->stages.filter_ms += retry.stages.filter_ms;
@@ -21,7 +20,7 @@ void Tracker::add_retry_times(const Attempt& retry, TrackResult* result) {
   result->stages.choice_ms += retry.stages.choice_ms;
 }
 
-void Tracker::remember_appearance(const cv::Mat& frame) {
+void Tracker::Impl::remember_appearance(const cv::Mat& frame) {
   if (!options_.predict_motion || !options_.confirm_motion) return;
   appearance_pending_ = false;
   if (keeps_motion_reference() && !reference_gray_.empty()) {
@@ -32,7 +31,7 @@ void Tracker::remember_appearance(const cv::Mat& frame) {
   }
 }
 
-void Tracker::settle_appearance() {
+void Tracker::Impl::settle_appearance() {
   if (!appearance_pending_) return;
   appearance_pending_ = false;
   // The reference window holds the boundary with the profile's few pixels either side (it is
@@ -41,15 +40,14 @@ void Tracker::settle_appearance() {
   appearance_.remember(reference_gray_, appearance_boundary_);
 }
 
-bool Tracker::confirmed(const cv::Mat& frame, const Polygon& moved, const Polygon& unmoved) {
+bool Tracker::Impl::confirmed(const cv::Mat& frame, const Polygon& moved, const Polygon& unmoved) {
   settle_appearance();
   const double agreement = appearance_.agreement(frame, moved);
   return agreement >= options_.min_motion_agreement &&
          agreement > appearance_.agreement(frame, unmoved);
 }
 
-Tracker::Attempt* Tracker::search(const cv::Mat& frame, TrackResult* result) {
-  found_smaller_ = false;
+void Tracker::Impl::predict_placement(const cv::Mat& frame) {
   if (options_.predict_motion && options_.measure_motion) {
     place_by_image_motion(frame);
   } else if (options_.predict_motion) {
@@ -61,121 +59,155 @@ Tracker::Attempt* Tracker::search(const cv::Mat& frame, TrackResult* result) {
   } else {
     predicted_ = boundary_;
   }
+}
+
+Tracker::Impl::Attempt* Tracker::Impl::search(const cv::Mat& frame, TrackResult* result) {
+  // The steps in SearchStep's order; each decides for itself whether it runs (tracker.h).
+  struct Step {
+    SearchStep id;
+    StepOutcome (Impl::*run)(const cv::Mat& frame, FrameSearch* s);
+  };
+  static constexpr Step kSteps[] = {
+      {SearchStep::kPredicted, &Impl::search_predicted},
+      {SearchStep::kUnmoved, &Impl::search_unmoved},
+      {SearchStep::kGrowth, &Impl::search_growth},
+      {SearchStep::kSmaller, &Impl::search_smaller},
+      {SearchStep::kImageMotion, &Impl::search_image_motion},
+  };
+  predict_placement(frame);
+  FrameSearch s;
+  s.result = result;
   // At a low frame rate an object receding steadily shrinks by more than the gate between frames.
   // The gate then compares with the shrunken area; never with a grown one, since Γ already favours
   // larger cycles and a cycle creeping outward grows steadily too.
-  const double gate_area = options_.predict_motion && options_.gate_sustained_shrink &&
-                                   monitor_.state() != TrackState::kLost
-                               ? boundary_area_ * motion_.sustained_shrink_ratio()
-                               : 0.0;
+  s.gate_area = options_.predict_motion && options_.gate_sustained_shrink &&
+                        monitor_.state() != TrackState::kLost
+                    ? boundary_area_ * motion_.sustained_shrink_ratio()
+                    : 0.0;
   // Not while lost: the search there (tracker_resume.cc) asks for the last confident shape, which
   // the published thresholds found; lowered ones invite a different cycle in its place.
-  const bool retry_weak_frames =
-      options_.adaptive_thresholds.retry_weak_frames && !options_.adaptive_thresholds.enabled &&
-      detector_->adapts_thresholds() && monitor_.state() != TrackState::kLost;
-  const bool adapted_first = retry_weak_frames && adapted_first_;
-  Attempt* a = &attempts_[0];
-  attempt(frame, predicted_, a, options_.min_area_similarity, adapted_first, gate_area);
-  result->line_ms = a->line_ms;
-  result->grouping_ms = a->grouping_ms;
-  result->stages = a->stages;
-  if (retry_weak_frames) a = retry_weak(frame, a, predicted_, &attempts_[1], result, gate_area);
-
-  // A prediction can be wrong (a blurred frame's measured motion, a camera that stopped): when
-  // nothing trusted was found where it points, where the boundary was is searched as well.
-  if (options_.fall_back_unmoved && predicted_ != boundary_) {
-    if (!a->assessed) assess(a, boundary_);
-    if (!trusted(*a, /*adapted=*/false)) {
-      const bool adapted_before = adapted_first_;
-      adapted_first_ = adapted_first;
-      Attempt* unmoved = &attempts_[2];
-      attempt(frame, boundary_, unmoved, options_.min_area_similarity, adapted_first, gate_area);
-      add_retry_times(*unmoved, result);
-      if (retry_weak_frames) {
-        unmoved = retry_weak(frame, unmoved, boundary_, &attempts_[3], result, gate_area);
-      }
-      if (!unmoved->assessed) assess(unmoved, boundary_);
-      // A second search tests more cycles: its boundary must also keep the reference shape.
-      if (trusted(*unmoved, /*adapted=*/true)) {
-        a = unmoved;
-      } else {
-        adapted_first_ = adapted_before;
-      }
-      // The grey window must be the chosen attempt's (the motion reference is taken from it).
-      if (a->roi != gray_roi_) {
-        to_exposed_gray(frame(a->roi), &gray_);
-        gray_roi_ = a->roi;
-      }
+  s.retry_weak_frames = options_.adaptive_thresholds.retry_weak_frames &&
+                        !options_.adaptive_thresholds.enabled && detector_->adapts_thresholds() &&
+                        monitor_.state() != TrackState::kLost;
+  s.adapted_first = s.retry_weak_frames && adapted_first_;
+  s.adapted_next = adapted_first_;
+  for (const Step& step : kSteps) {
+    const StepOutcome outcome = (this->*step.run)(frame, &s);
+    if (outcome.taken) {
+      s.found = outcome.searched;
+      s.step = step.id;
     }
   }
+  adapted_first_ = s.adapted_next;
+  Attempt* a = s.found;
+  // The grey window must be the chosen attempt's (its evidence, the motion reference).
+  if (a->choice && a->roi != gray_roi_) {
+    to_exposed_gray(frame(a->roi), &gray_);
+    gray_roi_ = a->roi;
+  }
+  result->step = a->choice ? s.step : SearchStep::kNone;
+  result->recovered = result->step == SearchStep::kImageMotion;
+  return a;
+}
 
+Tracker::Impl::StepOutcome Tracker::Impl::search_predicted(const cv::Mat& frame, FrameSearch* s) {
+  Attempt* a = &attempts_[0];
+  attempt(frame, predicted_, a, options_.min_area_similarity, s->adapted_first, s->gate_area);
+  s->result->line_ms = a->line_ms;
+  s->result->grouping_ms = a->grouping_ms;
+  s->result->stages = a->stages;
+  if (s->retry_weak_frames)
+    a = retry_weak(frame, a, predicted_, &attempts_[1], s, &s->adapted_next);
+  return {a, true};
+}
+
+Tracker::Impl::StepOutcome Tracker::Impl::search_unmoved(const cv::Mat& frame, FrameSearch* s) {
+  // A prediction can be wrong (a blurred frame's measured motion, a camera that stopped): when
+  // nothing trusted was found where it points, where the boundary was is searched as well.
+  if (!options_.fall_back_unmoved || predicted_ == boundary_) return {};
+  if (!s->found->assessed) assess(s->found, boundary_);
+  if (trusted(*s->found, /*adapted=*/false)) return {};
+  Attempt* unmoved = &attempts_[2];
+  attempt(frame, boundary_, unmoved, options_.min_area_similarity, s->adapted_first, s->gate_area);
+  add_retry_times(*unmoved, s->result);
+  // Its own weak-frame retry starts from the frame's first thresholds, and decides the next
+  // frame's only when its boundary is taken.
+  bool adapted_next = s->adapted_first;
+  if (s->retry_weak_frames) {
+    unmoved = retry_weak(frame, unmoved, boundary_, &attempts_[3], s, &adapted_next);
+  }
+  if (!unmoved->assessed) assess(unmoved, boundary_);
+  // A second search tests more cycles: its boundary must also keep the reference shape.
+  if (!trusted(*unmoved, /*adapted=*/true)) return {unmoved, false};
+  s->adapted_next = adapted_next;
+  return {unmoved, true};
+}
+
+Tracker::Impl::StepOutcome Tracker::Impl::search_growth(const cv::Mat& frame, FrameSearch* s) {
   // No candidate within the area gate of the last boundary: at a low frame rate an object
   // approaching or receding fast grows or shrinks by more than the gate between frames. Search
   // again with the size its recent growth predicts (if the image confirms that size: a growth
   // measured on a mis-tracked frame would otherwise compound).
-  if (!a->choice && options_.predict_motion &&
-      !(area_similarity(motion_.predicted_area_ratio(), 1.0) > options_.min_area_similarity)) {
-    Polygon scaled;
-    motion_.predict(boundary_, /*with_scale=*/true, &scaled);
-    if (!options_.confirm_motion || confirmed(frame, scaled, predicted_)) {
-      Attempt* retry = &attempts_[1];
-      attempt(frame, scaled, retry, options_.min_area_similarity);
-      add_retry_times(*retry, result);
-      if (retry->choice) a = retry;
-    }
+  if (s->found->choice || !options_.predict_motion ||
+      area_similarity(motion_.predicted_area_ratio(), 1.0) > options_.min_area_similarity) {
+    return {};
   }
+  Polygon scaled;
+  motion_.predict(boundary_, /*with_scale=*/true, &scaled);
+  if (options_.confirm_motion && !confirmed(frame, scaled, predicted_)) return {};
+  Attempt* retry = &attempts_[1];
+  attempt(frame, scaled, retry, options_.min_area_similarity);
+  add_retry_times(*retry, s->result);
+  return {retry, retry->choice.has_value()};
+}
 
+Tracker::Impl::StepOutcome Tracker::Impl::search_smaller(const cv::Mat& frame, FrameSearch* s) {
   // Still nothing within the gate: an object that starts receding fast (a low frame rate, right
   // after approaching) shrinks past the gate before its shrinking is sustained, and held frames
   // never teach the motion model. One gate step smaller is searched; its boundary must keep the
   // reference shape, as any second search's, and the outline it shrank from must be gone (a
   // cycle inside the object, found while the object's own outline is missed, is not followed).
-  if (!a->choice && options_.predict_motion && options_.gate_sustained_shrink &&
-      monitor_.state() != TrackState::kLost) {
-    Attempt* smaller = &attempts_[1];
-    attempt(frame, predicted_, smaller, options_.min_area_similarity, /*adapt=*/false,
-            boundary_area_ * options_.min_area_similarity);
-    add_retry_times(*smaller, result);
-    if (smaller->choice) {
-      if (!smaller->assessed) assess(smaller, boundary_);
-      if (trusted(*smaller, /*adapted=*/true) && outline_left(*smaller, predicted_)) {
-        a = smaller;
-        found_smaller_ = true;
-      }
-    }
+  if (s->found->choice || !options_.predict_motion || !options_.gate_sustained_shrink ||
+      monitor_.state() == TrackState::kLost) {
+    return {};
   }
+  Attempt* smaller = &attempts_[1];
+  attempt(frame, predicted_, smaller, options_.min_area_similarity, /*adapt=*/false,
+          boundary_area_ * options_.min_area_similarity);
+  add_retry_times(*smaller, s->result);
+  if (!smaller->choice) return {smaller, false};
+  if (!smaller->assessed) assess(smaller, boundary_);
+  return {smaller, trusted(*smaller, /*adapted=*/true) && outline_left(*smaller, predicted_)};
+}
 
+Tracker::Impl::StepOutcome Tracker::Impl::search_image_motion(const cv::Mat& frame,
+                                                              FrameSearch* s) {
   // Lost: the boundary may have moved out of the search band (fast motion, camera swing).
   // Estimate how the content around it moved since it was last tracked, and search again there.
   // After a cut of the view the image motion measures nothing (a look-alike left in place
   // would be found by it).
-  if (!a->choice && options_.recover_by_motion && !reference_gray_.empty() &&
-      !monitor_.after_cut()) {
-    const Clock::time_point recover_start = Clock::now();
-    cv::Mat current;
-    to_exposed_gray(frame(reference_roi_), &current);
-    const std::optional<TranslationEstimate> motion =
-        translation_.estimate(reference_gray_, current);
-    result->stages.recovery_ms = elapsed_ms(recover_start);
-    result->grouping_ms += result->stages.recovery_ms;
-    // A move well inside the search band was already searched; re-searching near the same place
-    // only invites a worse cycle, so only a move of at least half the band is followed.
-    if (motion && cv::norm(motion->shift) >= 0.5 * options_.filter_distance) {
-      Polygon moved = boundary_;
-      for (Point& p : moved) p += motion->shift;
-      Attempt* retry = &attempts_[1];
-      attempt(frame, moved, retry, options_.min_area_similarity);
-      add_retry_times(*retry, result);
-      if (retry->choice) {
-        a = retry;
-        result->recovered = true;
-      }
-    }
+  if (s->found->choice || !options_.recover_by_motion || reference_gray_.empty() ||
+      monitor_.after_cut()) {
+    return {};
   }
-  return a;
+  const Clock::time_point recover_start = Clock::now();
+  cv::Mat current;
+  to_exposed_gray(frame(reference_roi_), &current);
+  const std::optional<TranslationEstimate> motion = translation_.estimate(reference_gray_, current);
+  s->result->stages.recovery_ms = elapsed_ms(recover_start);
+  s->result->grouping_ms += s->result->stages.recovery_ms;
+  // A move well inside the search band was already searched; re-searching near the same place
+  // only invites a worse cycle, so only a move of at least half the band is followed.
+  if (!motion || cv::norm(motion->shift) < 0.5 * options_.filter_distance) return {};
+  Polygon moved = boundary_;
+  for (Point& p : moved) p += motion->shift;
+  Attempt* retry = &attempts_[1];
+  attempt(frame, moved, retry, options_.min_area_similarity);
+  add_retry_times(*retry, s->result);
+  return {retry, retry->choice.has_value()};
 }
 
-void Tracker::assess(Attempt* a, const Polygon& previous) const {
+void Tracker::Impl::assess(Attempt* a, const Polygon& previous) const {
   a->assessed = true;
   if (!a->choice) return;
   a->boundary = a->cycles->polygon(a->graph, a->choice->index);
@@ -183,17 +215,18 @@ void Tracker::assess(Attempt* a, const Polygon& previous) const {
   a->confidence = options_.confidence(a->evidence);
 }
 
-bool Tracker::trusted(const Attempt& a, bool adapted) const {
+bool Tracker::Impl::trusted(const Attempt& a, bool adapted) const {
   // Lowered thresholds close many more cycles, as a search for a lost object tests many more:
   // their boundary must also keep the reference shape, as a re-found object's must.
   return a.choice && a.confidence >= options_.loss.tracking_confidence &&
          (!adapted || a.evidence.shape_change <= options_.loss.match_shape_distance);
 }
 
-Tracker::Attempt* Tracker::retry_weak(const cv::Mat& frame, Attempt* first, const Polygon& prior,
-                                      Attempt* retry, TrackResult* result, double gate_area) {
+Tracker::Impl::Attempt* Tracker::Impl::retry_weak(const cv::Mat& frame, Attempt* first,
+                                                  const Polygon& prior, Attempt* retry,
+                                                  FrameSearch* s, bool* adapted_next) {
   assess(first, boundary_);
-  const bool first_adapted = adapted_first_;
+  const bool first_adapted = s->adapted_first;
   if (trusted(*first, first_adapted)) return first;
   if (!first_adapted) {
     // A dim or blurred frame's boundary falls below the published thresholds, a noisy frame's
@@ -212,13 +245,13 @@ Tracker::Attempt* Tracker::retry_weak(const cv::Mat& frame, Attempt* first, cons
              first->thresholds.pre_smoothing == 0.0) {
     return first;  // the adapted search was the published one
   }
-  attempt(frame, prior, retry, options_.min_area_similarity, !first_adapted, gate_area);
-  add_retry_times(*retry, result);
+  attempt(frame, prior, retry, options_.min_area_similarity, !first_adapted, s->gate_area);
+  add_retry_times(*retry, s->result);
   assess(retry, boundary_);
   // Only a trusted boundary replaces the first search's: lowered thresholds find some closed cycle
   // in almost any textured window, and a held frame (or a motion recovery) is better than that.
   if (trusted(*retry, !first_adapted)) {
-    if (options_.adaptive_thresholds.keep_retry_winner) adapted_first_ = !first_adapted;
+    if (options_.adaptive_thresholds.keep_retry_winner) *adapted_next = !first_adapted;
     return retry;
   }
   // An adapted search's boundary of another shape is not taken either.

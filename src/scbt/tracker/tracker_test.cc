@@ -11,6 +11,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "scbt/tracker/frame_checks.h"
+
 namespace scbt {
 namespace {
 
@@ -118,6 +120,7 @@ TEST(Tracker, BlankFrameIsHeld) {
   EXPECT_EQ(tracker.boundary(), polygon);
   EXPECT_EQ(result.num_detected, 0);
   EXPECT_EQ(result.num_candidates, 0);
+  EXPECT_EQ(result.step, SearchStep::kNone);
 }
 
 TEST(Tracker, FrameSizeChangeThrows) {
@@ -149,6 +152,7 @@ TEST_P(TrackerFollows, ShiftedRenderedPolygon) {
     for (Point& v : truth) v += step;
     const TrackResult result = tracker.track(render(truth, type));
     ASSERT_FALSE(result.held);
+    EXPECT_EQ(result.step, SearchStep::kPredicted);
     EXPECT_GT(result.num_detected, 0);
     EXPECT_GT(result.num_candidates, 0);
     EXPECT_GT(result.area_similarity, 0.9);
@@ -166,6 +170,17 @@ TEST_P(TrackerFollows, ShiftedRenderedPolygon) {
 }
 
 INSTANTIATE_TEST_SUITE_P(FrameTypes, TrackerFollows, ::testing::Values(CV_8UC1, CV_8UC3, CV_8UC4));
+
+TEST(SearchStep, EveryStepHasItsName) {
+  EXPECT_STREQ(step_name(SearchStep::kNone), "none");
+  EXPECT_STREQ(step_name(SearchStep::kPredicted), "predicted");
+  EXPECT_STREQ(step_name(SearchStep::kUnmoved), "unmoved");
+  EXPECT_STREQ(step_name(SearchStep::kGrowth), "growth");
+  EXPECT_STREQ(step_name(SearchStep::kSmaller), "smaller");
+  EXPECT_STREQ(step_name(SearchStep::kImageMotion), "image motion");
+  EXPECT_STREQ(step_name(SearchStep::kInPlace), "in place");
+  EXPECT_STREQ(step_name(SearchStep::kWholeFrame), "whole frame");
+}
 
 TEST(ToGray, ChannelsAndDepths) {
   cv::Mat gray;

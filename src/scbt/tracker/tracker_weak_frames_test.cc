@@ -9,7 +9,7 @@
 #include <sstream>
 
 #include "scbt/synthetic/scene.h"
-#include "scbt/tracker/dim_camera_test_util.h"
+#include "scbt/testing/dim_camera_test_util.h"
 #include "scbt/tracker/option_table.h"
 #include "scbt/tracker/tracker.h"
 

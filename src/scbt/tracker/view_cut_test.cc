@@ -5,7 +5,7 @@
 #include <opencv2/imgproc.hpp>
 #include <vector>
 
-#include "scbt/tracker/texture_test_util.h"
+#include "scbt/testing/texture_test_util.h"
 
 namespace scbt {
 namespace {

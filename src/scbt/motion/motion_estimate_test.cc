@@ -1,11 +1,11 @@
-#include "scbt/tracker/motion_estimate.h"
+#include "scbt/motion/motion_estimate.h"
 
 #include <gtest/gtest.h>
 
 #include <opencv2/imgproc.hpp>
 #include <random>
 
-#include "scbt/tracker/texture_test_util.h"
+#include "scbt/testing/texture_test_util.h"
 
 namespace scbt {
 namespace {

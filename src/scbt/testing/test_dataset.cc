@@ -1,4 +1,4 @@
-#include "scbt/app/test_dataset.h"
+#include "scbt/testing/test_dataset.h"
 
 #include <cstdio>
 #include <fstream>

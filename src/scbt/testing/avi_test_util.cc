@@ -1,4 +1,4 @@
-#include "scbt/io/avi_test_util.h"
+#include "scbt/testing/avi_test_util.h"
 
 #include <cstdint>
 #include <fstream>

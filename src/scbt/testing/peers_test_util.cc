@@ -1,4 +1,4 @@
-#include "scbt/peers/peers_test_util.h"
+#include "scbt/testing/peers_test_util.h"
 
 #include <cmath>
 #include <opencv2/imgproc.hpp>

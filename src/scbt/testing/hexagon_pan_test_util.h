@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "scbt/synthetic/scene.h"
-#include "scbt/tracker/hexagon_scene_test_util.h"
+#include "scbt/testing/hexagon_scene_test_util.h"
 #include "scbt/tracker/tracker.h"
 
 namespace scbt {

@@ -6,7 +6,7 @@
 #include <optional>
 
 #include "scbt/geometry/polygon.h"
-#include "scbt/tracker/phase_correlation.h"
+#include "scbt/motion/phase_correlation.h"
 
 namespace scbt {
 

@@ -1,4 +1,4 @@
-#include "scbt/tracker/block_average.h"
+#include "scbt/motion/block_average.h"
 
 #include <cstdint>
 #include <stdexcept>

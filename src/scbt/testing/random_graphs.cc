@@ -1,4 +1,4 @@
-#include "scbt/graph/random_graphs.h"
+#include "scbt/testing/random_graphs.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,10 +1,10 @@
-#include "scbt/tracker/motion_estimate.h"
+#include "scbt/motion/motion_estimate.h"
 
 #include <algorithm>
 #include <cstdint>
 #include <opencv2/imgproc.hpp>
 
-#include "scbt/tracker/block_average.h"
+#include "scbt/motion/block_average.h"
 
 namespace scbt {
 

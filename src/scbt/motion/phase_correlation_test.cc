@@ -1,4 +1,4 @@
-#include "scbt/tracker/phase_correlation.h"
+#include "scbt/motion/phase_correlation.h"
 
 #include <gtest/gtest.h>
 
