@@ -7,6 +7,9 @@
 namespace scbt {
 namespace {
 
+// How far inside and outside the outline its side levels are read (px): past the edge's blur.
+constexpr double kSideOffset = 3.0;
+
 // Outward unit normals of a closed outline.
 std::vector<Point> outward_normals(const Polygon& outline) {
   const size_t n = outline.size();
@@ -74,6 +77,19 @@ void ObjectMemory::clear() {
   placed_.clear();
   polarity_.clear();
   contrast_.clear();
+  inside_.clear();
+  outside_.clear();
+  anchor_ = ShapeDescriptor();
+}
+
+void ObjectMemory::restart(const Polygon& boundary, const cv::Mat& gray, cv::Point tl) {
+  clear();
+  remember(boundary, gray, tl);
+  anchor_ = affine_shape_descriptor(boundary);
+}
+
+bool ObjectMemory::keeps_shape(const Polygon& boundary) const {
+  return shape_distance(affine_shape_descriptor(boundary), anchor_) <= options_.max_shape_change;
 }
 
 void ObjectMemory::remember(const Polygon& boundary, const cv::Mat& gray, cv::Point tl) {
@@ -85,7 +101,15 @@ void ObjectMemory::remember(const Polygon& boundary, const cv::Mat& gray, cv::Po
   const std::vector<Point> normals = outward_normals(model_);
   polarity_.assign(model_.size(), 0.0);
   contrast_.assign(model_.size(), 0.0);
+  inside_.assign(model_.size(), -1.0);
+  outside_.assign(model_.size(), -1.0);
   for (size_t i = 0; i < model_.size(); ++i) {
+    double in = 0.0, out = 0.0;
+    if (grey_at(gray, tl, model_[i] - normals[i] * kSideOffset, &in) &&
+        grey_at(gray, tl, model_[i] + normals[i] * kSideOffset, &out)) {
+      inside_[i] = in;
+      outside_[i] = out;
+    }
     // The strongest step within a pixel of the outline: a traced outline sits on its edge to a
     // pixel or so.
     double best = 0.0;
@@ -232,16 +256,30 @@ double ObjectMemory::departure_support(const Polygon& cycle, const Polygon& fitt
       }
     }
     const double need = std::max(options_.min_step, 0.4 * contrast_[nearest]);
+    bool edge = false;
     for (double k : {-1.0, 0.0, 1.0}) {
       double step = 0.0;
       if (!step_at(gray, tl, samples[i], normals[i], k, &step)) continue;
       const double response =
           polarity_[nearest] != 0.0 ? polarity_[nearest] * step : std::abs(step);
       if (response >= need) {
-        ++supported;
+        edge = true;
         break;
       }
     }
+    if (!edge) continue;
+    // The object's edge has the object on its inside and what surrounds it outside.
+    double in = 0.0, out = 0.0;
+    if (inside_[nearest] >= 0.0 && grey_at(gray, tl, samples[i] - normals[i] * kSideOffset, &in) &&
+        grey_at(gray, tl, samples[i] + normals[i] * kSideOffset, &out)) {
+      const double tolerance =
+          std::max(15.0, 0.35 * std::abs(outside_[nearest] - inside_[nearest]));
+      if (std::abs(in - inside_[nearest]) > tolerance ||
+          std::abs(out - outside_[nearest]) > tolerance) {
+        continue;
+      }
+    }
+    ++supported;
   }
   return departing == 0 ? 1.0 : static_cast<double>(supported) / departing;
 }

@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "scbt/geometry/polygon.h"
+#include "scbt/geometry/shape_descriptor.h"
 
 namespace scbt {
 
@@ -25,6 +26,9 @@ struct ObjectMemoryOptions {
   double min_step = 6.0;    // the smallest grey step counted as an edge (central difference)
   // A point is visible when its edge lies within this of where the fit puts it (px).
   double inlier_px = 2.5;
+  // The most an outline's affine shape may differ from the anchor's to be learnt
+  // (shape_distance; an ellipse of aspect 1.1 against a circle is 0.024).
+  double max_shape_change = 0.06;
 };
 
 struct MemoryFit {
@@ -39,6 +43,12 @@ class ObjectMemory {
 
   void clear();
   bool ready() const { return !model_.empty(); }
+  // Forgets everything and remembers `boundary` (as remember()), whose shape up to an affine map
+  // becomes the anchor every later outline must keep to be learnt (keeps_shape).
+  void restart(const Polygon& boundary, const cv::Mat& gray, cv::Point tl);
+  // Whether `boundary` is the anchor's shape up to an affine map (a plane seen from another
+  // angle): an occluder creeping over the object, a little each frame, changes it; a view does not.
+  bool keeps_shape(const Polygon& boundary) const;
   // Remembers `boundary`, tracked confidently in the grey window `gray` (whose top-left corner is
   // `tl` in the frame): its outline and, per point, the edge's polarity and contrast.
   void remember(const Polygon& boundary, const cv::Mat& gray, cv::Point tl);
@@ -50,9 +60,10 @@ class ObjectMemory {
   void place(const Polygon& boundary);
 
   // Of `cycle`'s points farther than `distance` from `fitted` (the last fit's outline), the
-  // fraction with an edge across the cycle of the polarity and contrast the memory had nearest
-  // them (1 when none is that far): a cycle departing along the object's own edge follows a
-  // change of the object's shape; one departing along an occluder or the background does not.
+  // fraction with an edge across the cycle like the one the memory had nearest them: its
+  // polarity, its contrast and the grey levels on either side (1 when none is that far). A cycle
+  // departing along the object's own edge follows a change of the object's shape; one departing
+  // along an occluder or the background does not.
   double departure_support(const Polygon& cycle, const Polygon& fitted, double distance,
                            const cv::Mat& gray, cv::Point tl) const;
   // The fraction of `outline`'s points (as resampled by the memory) farther than `distance`
@@ -63,8 +74,13 @@ class ObjectMemory {
   ObjectMemoryOptions options_;
   std::vector<double> polarity_;  // +1: brighter outside, -1: darker outside, 0: no clear edge
   std::vector<double> contrast_;  // |step| at the point when remembered
-  Polygon model_;                 // the outline when remembered
-  Polygon placed_;                // the outline where it was last fitted
+  // Grey levels a few pixels inside and outside the outline at the point: what the object's own
+  // edge has on either side (an occluder's side or a background sheet has other levels).
+  std::vector<double> inside_;
+  std::vector<double> outside_;
+  Polygon model_;           // the outline when remembered
+  Polygon placed_;          // the outline where it was last fitted
+  ShapeDescriptor anchor_;  // affine_shape_descriptor of the outline restart() was given
 };
 
 // `polygon` resampled to `n` points evenly spaced along its length, from its first vertex.

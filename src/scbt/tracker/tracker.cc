@@ -146,7 +146,7 @@ void Tracker::Impl::init(const cv::Mat& frame, const Polygon& polygon) {
   appearance_.remember(frame, boundary_);
   shape_memory_.restart(boundary_);
   memory_.clear();
-  if (options_.object_memory) memory_.remember(boundary_, reference_gray_, {0, 0});
+  if (options_.object_memory) memory_.restart(boundary_, reference_gray_, {0, 0});
   monitor_.reset(
       polygon, unstretched_level(exposure_stretch_,
                                  sample_edges(polygon, reference_gray_, {0, 0}, 0.0).inside_level));
@@ -295,7 +295,7 @@ void Tracker::Impl::report_attempt(const Attempt& a, TrackResult* result) {
 
 bool Tracker::Impl::memory_overrides(Attempt* a, const MemoryFit& fit) {
   // Too little of the object seen to place it from the memory alone.
-  if (fit.visible < options_.min_visible) return false;
+  if (fit.visible < kPredictVisible) return false;
   if (!a->choice) return true;
   if (!a->assessed) assess(a, boundary_);
   // A cycle along the fitted outline (within a few pixels, or a twentieth of the object's size)
@@ -323,22 +323,16 @@ TrackResult Tracker::Impl::track(const cv::Mat& frame) {
     result.visible = fit.valid ? fit.visible : 0.0;
   }
   if (fit.valid && memory_overrides(a, fit)) {
-    // The remembered outline where the visible part of the object puts it.
+    // The remembered outline where the visible part of the object puts it. The loss monitor is
+    // not told: the object is there, partly hidden; its state says how much is seen.
     boundary_ = fit.outline;
     boundary_area_ = area(boundary_);
     result.from_memory = true;
     result.step = SearchStep::kMemory;
     result.confidence = fit.visible;
+    result.state =
+        fit.visible >= options_.min_visible ? TrackState::kTracking : TrackState::kUncertain;
     motion_.update(boundary_);
-    result.state = monitor_.update(boundary_, result.confidence, false, result.evidence);
-    if (result.state == TrackState::kTracking && fit.visible < options_.min_visible) {
-      result.state = TrackState::kUncertain;
-    }
-    if (result.state == TrackState::kLost) {
-      boundary_ = monitor_.latest_confident();
-      boundary_area_ = area(boundary_);
-      lost_output_ = boundary_;
-    }
     result.boundary = boundary_;
     report_attempt(*a, &result);
     return result;
@@ -360,7 +354,9 @@ TrackResult Tracker::Impl::track(const cv::Mat& frame) {
       measure_edge_blur(gray_, a->roi.tl());
     }
     if (options_.object_memory && result.confidence >= options_.loss.tracking_confidence &&
-        gray_roi_ == a->roi) {
+        gray_roi_ == a->roi && memory_.keeps_shape(boundary_) &&
+        (!fit.valid || memory_.departure_support(boundary_, fit.outline, -1.0, gray_,
+                                                 gray_roi_.tl()) >= kLearnSupport)) {
       memory_.remember(boundary_, gray_, a->roi.tl());
     }
     // This frame's appearance replaces a pending one, which need not be read first.

@@ -231,6 +231,17 @@ class Tracker::Impl {
   StableChooser chooser_;     // its buffers and distance cache are reused frame to frame
   ShapeMemory shape_memory_;  // the shape the choice weighs candidates against
   ObjectMemory memory_;       // the object's outline and edges (TrackerOptions::object_memory)
+  cv::Mat memory_gray_;       // the window the memory is fitted to while lost
+  // While lost: the memory fitted where the object was last placed; tracking resumes from it when
+  // at least kResumeVisible of its outline is seen (*result filled).
+  bool resume_from_memory(const cv::Mat& frame, TrackResult* result);
+  static constexpr double kResumeVisible = 0.85;
+  // The fraction of a taken cycle's outline with the object's edges (polarity, contrast, the
+  // levels on either side) for the memory to learn it: a cycle that took in an occluder's side
+  // as the occluder crept over the object, each frame a little, is not learnt.
+  static constexpr double kLearnSupport = 0.8;
+  // The least visible fraction the memory's fitted outline stands in for the object with.
+  static constexpr double kPredictVisible = 0.35;
   // Whether this frame's fit of the memory should replace attempt a's choice (none, or one that
   // departs from the object along part of its outline).
   bool memory_overrides(Attempt* a, const MemoryFit& fit);

@@ -65,6 +65,8 @@ TrackResult Tracker::Impl::track_lost(const cv::Mat& frame) {
   TrackResult result;
   // kInPlace. After a cut of the view, where the object was says nothing: only the whole frame.
   if (!monitor_.after_cut() && resume_in_place(frame, &result)) return result;
+  // kMemory: the remembered outline found where it was, its edges seen again (an occluder left).
+  if (!monitor_.after_cut() && resume_from_memory(frame, &result)) return result;
   // kWholeFrame: the last confident outline placed over the frame, every placement searched.
   const double in_place_line_ms = result.line_ms, in_place_grouping_ms = result.grouping_ms;
   result = TrackResult();

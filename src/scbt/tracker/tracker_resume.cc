@@ -34,6 +34,23 @@ bool Tracker::Impl::resume_in_place(const cv::Mat& frame, TrackResult* result) {
   return true;
 }
 
+bool Tracker::Impl::resume_from_memory(const cv::Mat& frame, TrackResult* result) {
+  if (!options_.object_memory || !memory_.ready()) return false;
+  const cv::Rect roi = detection_roi(
+      memory_.placed(), options_.filter_distance + options_.detector.roi_padding, frame_size_);
+  if (roi.empty()) return false;
+  to_exposed_gray(frame(roi), &memory_gray_);
+  const MemoryFit fit = memory_.fit(memory_gray_, roi.tl());
+  // Nearly all of the object seen where it was remembered: it, not a look-alike elsewhere.
+  if (!fit.valid || fit.visible < kResumeVisible) return false;
+  result->visible = fit.visible;
+  result->confidence = fit.visible;
+  result->from_memory = true;
+  result->step = SearchStep::kMemory;
+  resume_tracking_from(frame, fit.outline, result);
+  return true;
+}
+
 void Tracker::Impl::resume_tracking_from(const cv::Mat& frame, Polygon boundary,
                                          TrackResult* result) {
   result->state = TrackState::kTracking;
@@ -59,7 +76,7 @@ void Tracker::Impl::resume_tracking_from(const cv::Mat& frame, Polygon boundary,
     appearance_.remember(frame, boundary_);
   }
   shape_memory_.restart(boundary_);
-  if (options_.object_memory) memory_.remember(boundary_, reference_gray_, reference_roi_.tl());
+  if (options_.object_memory) memory_.restart(boundary_, reference_gray_, reference_roi_.tl());
   result->boundary = boundary_;
 }
 
