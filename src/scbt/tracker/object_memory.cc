@@ -46,6 +46,25 @@ bool step_at(const cv::Mat& gray, cv::Point tl, Point p, Point n, double k, doub
   return true;
 }
 
+// The point of closed polygon `polygon` nearest to `p`.
+Point closest_point_on(const Polygon& polygon, const Point& p) {
+  Point best = polygon.front();
+  double best_d2 = 1e300;
+  for (size_t i = 0; i < polygon.size(); ++i) {
+    const Point a = polygon[i], b = polygon[(i + 1) % polygon.size()];
+    const Point e = b - a;
+    const double len2 = e.dot(e);
+    const double t = len2 > 0.0 ? std::clamp((p - a).dot(e) / len2, 0.0, 1.0) : 0.0;
+    const Point q = a + e * t;
+    const double d2 = (q - p).dot(q - p);
+    if (d2 < best_d2) {
+      best_d2 = d2;
+      best = q;
+    }
+  }
+  return best;
+}
+
 }  // namespace
 
 Polygon resample_outline(const Polygon& polygon, int n) {
@@ -74,6 +93,7 @@ Polygon resample_outline(const Polygon& polygon, int n) {
 
 void ObjectMemory::clear() {
   model_.clear();
+  anchor_model_.clear();
   placed_.clear();
   polarity_.clear();
   contrast_.clear();
@@ -84,7 +104,18 @@ void ObjectMemory::clear() {
 
 void ObjectMemory::restart(const Polygon& boundary, const cv::Mat& gray, cv::Point tl) {
   clear();
-  remember(boundary, gray, tl);
+  anchor_model_ = resample_outline(boundary, options_.points);
+  if (anchor_model_.size() < 3) {
+    clear();
+    return;
+  }
+  model_ = anchor_model_;
+  placed_ = model_;
+  polarity_.assign(model_.size(), 0.0);
+  contrast_.assign(model_.size(), 0.0);
+  inside_.assign(model_.size(), -1.0);
+  outside_.assign(model_.size(), -1.0);
+  read_edges(gray, tl);
   anchor_ = affine_shape_descriptor(boundary);
 }
 
@@ -93,25 +124,46 @@ bool ObjectMemory::keeps_shape(const Polygon& boundary) const {
 }
 
 void ObjectMemory::remember(const Polygon& boundary, const cv::Mat& gray, cv::Point tl) {
-  model_ = resample_outline(boundary, options_.points);
-  if (model_.size() < 3) {
-    clear();
+  if (!ready()) {
+    restart(boundary, gray, tl);
     return;
   }
-  const std::vector<Point> normals = outward_normals(model_);
-  polarity_.assign(model_.size(), 0.0);
-  contrast_.assign(model_.size(), 0.0);
-  inside_.assign(model_.size(), -1.0);
-  outside_.assign(model_.size(), -1.0);
-  for (size_t i = 0; i < model_.size(); ++i) {
-    double in = 0.0, out = 0.0;
-    if (grey_at(gray, tl, model_[i] - normals[i] * kSideOffset, &in) &&
-        grey_at(gray, tl, model_[i] + normals[i] * kSideOffset, &out)) {
-      inside_[i] = in;
-      outside_[i] = out;
+  // The anchor's outline mapped onto `boundary` by an affine map (closest points, a few rounds
+  // from where it is placed): the memory takes the boundary's place and view, never its shape, so
+  // that a cycle eaten into by an occluder a little each frame cannot wear the outline away.
+  const size_t n = anchor_model_.size();
+  Polygon mapped = placed_;
+  for (int round = 0; round < 4; ++round) {
+    cv::Matx33d ata = cv::Matx33d::zeros();
+    cv::Vec3d atx(0, 0, 0), aty(0, 0, 0);
+    for (size_t i = 0; i < n; ++i) {
+      const Point target = closest_point_on(boundary, mapped[i]);
+      const cv::Vec3d row(anchor_model_[i].x, anchor_model_[i].y, 1.0);
+      ata += row * row.t();
+      atx += target.x * row;
+      aty += target.y * row;
     }
+    cv::Mat ax, ay;
+    if (!cv::solve(cv::Mat(ata), cv::Mat(atx), ax, cv::DECOMP_CHOLESKY) ||
+        !cv::solve(cv::Mat(ata), cv::Mat(aty), ay, cv::DECOMP_CHOLESKY)) {
+      return;
+    }
+    for (size_t i = 0; i < n; ++i) {
+      const Point& p = anchor_model_[i];
+      mapped[i] = Point(ax.at<double>(0) * p.x + ax.at<double>(1) * p.y + ax.at<double>(2),
+                        ay.at<double>(0) * p.x + ay.at<double>(1) * p.y + ay.at<double>(2));
+    }
+  }
+  model_ = mapped;
+  placed_ = mapped;
+  read_edges(gray, tl);
+}
+
+void ObjectMemory::read_edges(const cv::Mat& gray, cv::Point tl) {
+  const std::vector<Point> normals = outward_normals(model_);
+  for (size_t i = 0; i < model_.size(); ++i) {
     // The strongest step within a pixel of the outline: a traced outline sits on its edge to a
-    // pixel or so.
+    // pixel or so. Where none is clear (hidden, or faint there) the point keeps what it had.
     double best = 0.0;
     for (double k : {-1.0, 0.0, 1.0}) {
       double step = 0.0;
@@ -119,12 +171,16 @@ void ObjectMemory::remember(const Polygon& boundary, const cv::Mat& gray, cv::Po
         best = step;
       }
     }
-    if (std::abs(best) >= options_.min_step) {
-      polarity_[i] = best > 0.0 ? 1.0 : -1.0;
-      contrast_[i] = std::abs(best);
+    if (std::abs(best) < options_.min_step) continue;
+    double in = 0.0, out = 0.0;
+    if (grey_at(gray, tl, model_[i] - normals[i] * kSideOffset, &in) &&
+        grey_at(gray, tl, model_[i] + normals[i] * kSideOffset, &out)) {
+      inside_[i] = in;
+      outside_[i] = out;
     }
+    polarity_[i] = best > 0.0 ? 1.0 : -1.0;
+    contrast_[i] = std::abs(best);
   }
-  placed_ = model_;
 }
 
 void ObjectMemory::place(const Polygon& boundary) {
@@ -157,6 +213,7 @@ MemoryFit ObjectMemory::fit(const cv::Mat& gray, cv::Point tl) {
         if (!step_at(gray, tl, current[i], normals[i], k, &step)) continue;
         const double response = polarity_[i] * step;
         if (response < need) continue;
+        if (!sides_match(gray, tl, current[i] + normals[i] * k, normals[i], i)) continue;
         const double score = response * (1.0 - 0.5 * std::abs(k) / (reach + 1.0));
         if (score > best_score) {
           best_score = score;
@@ -236,6 +293,20 @@ MemoryFit ObjectMemory::fit(const cv::Mat& gray, cv::Point tl) {
   return result;
 }
 
+bool ObjectMemory::sides_match(const cv::Mat& gray, cv::Point tl, Point p, Point normal,
+                               size_t point) const {
+  if (inside_[point] < 0.0) return true;  // not known
+  double in = 0.0, out = 0.0;
+  if (!grey_at(gray, tl, p - normal * kSideOffset, &in) ||
+      !grey_at(gray, tl, p + normal * kSideOffset, &out)) {
+    return true;
+  }
+  // What surrounds the object changes more as it moves than the object's own side.
+  const double step = std::abs(outside_[point] - inside_[point]);
+  return std::abs(in - inside_[point]) <= std::max(20.0, 0.35 * step) &&
+         std::abs(out - outside_[point]) <= std::max(30.0, 0.5 * step);
+}
+
 double ObjectMemory::departure_support(const Polygon& cycle, const Polygon& fitted, double distance,
                                        const cv::Mat& gray, cv::Point tl) const {
   if (!ready() || fitted.size() != model_.size()) return 1.0;
@@ -269,16 +340,7 @@ double ObjectMemory::departure_support(const Polygon& cycle, const Polygon& fitt
     }
     if (!edge) continue;
     // The object's edge has the object on its inside and what surrounds it outside.
-    double in = 0.0, out = 0.0;
-    if (inside_[nearest] >= 0.0 && grey_at(gray, tl, samples[i] - normals[i] * kSideOffset, &in) &&
-        grey_at(gray, tl, samples[i] + normals[i] * kSideOffset, &out)) {
-      const double tolerance =
-          std::max(15.0, 0.35 * std::abs(outside_[nearest] - inside_[nearest]));
-      if (std::abs(in - inside_[nearest]) > tolerance ||
-          std::abs(out - outside_[nearest]) > tolerance) {
-        continue;
-      }
-    }
+    if (!sides_match(gray, tl, samples[i], normals[i], nearest)) continue;
     ++supported;
   }
   return departing == 0 ? 1.0 : static_cast<double>(supported) / departing;

@@ -49,8 +49,10 @@ class ObjectMemory {
   // Whether `boundary` is the anchor's shape up to an affine map (a plane seen from another
   // angle): an occluder creeping over the object, a little each frame, changes it; a view does not.
   bool keeps_shape(const Polygon& boundary) const;
-  // Remembers `boundary`, tracked confidently in the grey window `gray` (whose top-left corner is
-  // `tl` in the frame): its outline and, per point, the edge's polarity and contrast.
+  // Learns from `boundary`, tracked confidently in the grey window `gray` (whose top-left corner
+  // is `tl` in the frame): the remembered outline is the anchor's mapped onto it by an affine map
+  // (its place and view, not its shape), and each point whose edge is clear there takes that
+  // edge's polarity, contrast and side levels. The first call restarts.
   void remember(const Polygon& boundary, const cv::Mat& gray, cv::Point tl);
   // Fits the remembered outline to the grey window, starting from where it was last placed.
   MemoryFit fit(const cv::Mat& gray, cv::Point tl);
@@ -72,13 +74,19 @@ class ObjectMemory {
 
  private:
   ObjectMemoryOptions options_;
+  // Whether the grey levels either side of `p` (across `normal`) are those memory point `point`
+  // had: the object inside, its surroundings outside (true when either is unknown).
+  bool sides_match(const cv::Mat& gray, cv::Point tl, Point p, Point normal, size_t point) const;
+  // Reads each point's edge at model_ in the grey window (points without a clear one keep theirs).
+  void read_edges(const cv::Mat& gray, cv::Point tl);
   std::vector<double> polarity_;  // +1: brighter outside, -1: darker outside, 0: no clear edge
   std::vector<double> contrast_;  // |step| at the point when remembered
   // Grey levels a few pixels inside and outside the outline at the point: what the object's own
   // edge has on either side (an occluder's side or a background sheet has other levels).
   std::vector<double> inside_;
   std::vector<double> outside_;
-  Polygon model_;           // the outline when remembered
+  Polygon anchor_model_;    // the outline restart() was given, resampled
+  Polygon model_;           // the anchor's outline where it was last learnt
   Polygon placed_;          // the outline where it was last fitted
   ShapeDescriptor anchor_;  // affine_shape_descriptor of the outline restart() was given
 };

@@ -293,6 +293,12 @@ void Tracker::Impl::report_attempt(const Attempt& a, TrackResult* result) {
   }
 }
 
+// How near a cycle must run to the memory's fitted outline to follow it: a few pixels, or a
+// twentieth of the object's size.
+static double near_outline(const Polygon& fitted) {
+  return std::max(3.0, 0.05 * std::sqrt(std::max(1.0, area(fitted))));
+}
+
 bool Tracker::Impl::memory_overrides(Attempt* a, const MemoryFit& fit) {
   // Too little of the object seen to place it from the memory alone.
   if (fit.visible < kPredictVisible) return false;
@@ -300,9 +306,8 @@ bool Tracker::Impl::memory_overrides(Attempt* a, const MemoryFit& fit) {
   if (!a->assessed) assess(a, boundary_);
   // A cycle along the fitted outline (within a few pixels, or a twentieth of the object's size)
   // but for a small part is the object: kept as found, to the pixel.
-  const double size = std::sqrt(std::max(1.0, area(fit.outline)));
-  const double near = std::max(3.0, 0.05 * size);
-  if (memory_.mismatch(a->boundary, fit.outline, near) <= 0.15) return false;
+  const double near = near_outline(fit.outline);
+  if (memory_.mismatch(a->boundary, fit.outline, near) <= kAgreeMismatch) return false;
   // Departing along edges like the object's own: its shape changed, which the memory follows.
   return memory_.departure_support(a->boundary, fit.outline, near, gray_, gray_roi_.tl()) < 0.7;
 }
@@ -355,8 +360,10 @@ TrackResult Tracker::Impl::track(const cv::Mat& frame) {
     }
     if (options_.object_memory && result.confidence >= options_.loss.tracking_confidence &&
         gray_roi_ == a->roi && memory_.keeps_shape(boundary_) &&
-        (!fit.valid || memory_.departure_support(boundary_, fit.outline, -1.0, gray_,
-                                                 gray_roi_.tl()) >= kLearnSupport)) {
+        (!fit.valid ||
+         (memory_.mismatch(boundary_, fit.outline, near_outline(fit.outline)) <= kAgreeMismatch &&
+          memory_.departure_support(boundary_, fit.outline, -1.0, gray_, gray_roi_.tl()) >=
+              kLearnSupport))) {
       memory_.remember(boundary_, gray_, a->roi.tl());
     }
     // This frame's appearance replaces a pending one, which need not be read first.

@@ -240,6 +240,8 @@ class Tracker::Impl {
   // levels on either side) for the memory to learn it: a cycle that took in an occluder's side
   // as the occluder crept over the object, each frame a little, is not learnt.
   static constexpr double kLearnSupport = 0.8;
+  // A cycle along the fitted outline but for at most this fraction of it agrees with the memory.
+  static constexpr double kAgreeMismatch = 0.15;
   // The least visible fraction the memory's fitted outline stands in for the object with.
   static constexpr double kPredictVisible = 0.35;
   // Whether this frame's fit of the memory should replace attempt a's choice (none, or one that
