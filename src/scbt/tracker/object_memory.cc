@@ -99,7 +99,6 @@ void ObjectMemory::clear() {
   contrast_.clear();
   inside_.clear();
   outside_.clear();
-  anchor_ = ShapeDescriptor();
 }
 
 void ObjectMemory::restart(const Polygon& boundary, const cv::Mat& gray, cv::Point tl) {
@@ -116,11 +115,6 @@ void ObjectMemory::restart(const Polygon& boundary, const cv::Mat& gray, cv::Poi
   inside_.assign(model_.size(), -1.0);
   outside_.assign(model_.size(), -1.0);
   read_edges(gray, tl);
-  anchor_ = affine_shape_descriptor(boundary);
-}
-
-bool ObjectMemory::keeps_shape(const Polygon& boundary) const {
-  return shape_distance(affine_shape_descriptor(boundary), anchor_) <= options_.max_shape_change;
 }
 
 void ObjectMemory::remember(const Polygon& boundary, const cv::Mat& gray, cv::Point tl) {
@@ -181,12 +175,6 @@ void ObjectMemory::read_edges(const cv::Mat& gray, cv::Point tl) {
     polarity_[i] = best > 0.0 ? 1.0 : -1.0;
     contrast_[i] = std::abs(best);
   }
-}
-
-void ObjectMemory::place(const Polygon& boundary) {
-  if (!ready()) return;
-  placed_ = resample_outline(boundary, options_.points);
-  if (placed_.size() != model_.size()) placed_ = model_;
 }
 
 MemoryFit ObjectMemory::fit(const cv::Mat& gray, cv::Point tl) {

@@ -1,6 +1,8 @@
 // What the tracker remembers of the object beyond the last boundary: its outline as a fixed
-// number of points, each with the polarity and contrast of the edge it had there, kept from
-// confident frames whose boundary agrees with it. Each frame the remembered outline is fitted to
+// number of points, each with the polarity, contrast and side levels of the edge it had there.
+// The outline's shape is the one it was started with (the anchor); confident frames whose
+// boundary agrees with it move it by an affine map (place and view) and refresh the edges. Each
+// frame the remembered outline is fitted to
 // the image (each point looks along its normal for an edge of its own polarity; a similarity
 // transform is fitted to the points that found one, robustly), which gives
 //  - where the object is even when part of it is hidden: the fitted outline, hidden part
@@ -16,7 +18,6 @@
 #include <vector>
 
 #include "scbt/geometry/polygon.h"
-#include "scbt/geometry/shape_descriptor.h"
 
 namespace scbt {
 
@@ -26,9 +27,6 @@ struct ObjectMemoryOptions {
   double min_step = 6.0;    // the smallest grey step counted as an edge (central difference)
   // A point is visible when its edge lies within this of where the fit puts it (px).
   double inlier_px = 2.5;
-  // The most an outline's affine shape may differ from the anchor's to be learnt
-  // (shape_distance; an ellipse of aspect 1.1 against a circle is 0.024).
-  double max_shape_change = 0.06;
 };
 
 struct MemoryFit {
@@ -43,12 +41,9 @@ class ObjectMemory {
 
   void clear();
   bool ready() const { return !model_.empty(); }
-  // Forgets everything and remembers `boundary` (as remember()), whose shape up to an affine map
-  // becomes the anchor every later outline must keep to be learnt (keeps_shape).
+  // Forgets everything and remembers `boundary`: its outline becomes the anchor whose affine
+  // images the memory holds from then on (remember()).
   void restart(const Polygon& boundary, const cv::Mat& gray, cv::Point tl);
-  // Whether `boundary` is the anchor's shape up to an affine map (a plane seen from another
-  // angle): an occluder creeping over the object, a little each frame, changes it; a view does not.
-  bool keeps_shape(const Polygon& boundary) const;
   // Learns from `boundary`, tracked confidently in the grey window `gray` (whose top-left corner
   // is `tl` in the frame): the remembered outline is the anchor's mapped onto it by an affine map
   // (its place and view, not its shape), and each point whose edge is clear there takes that
@@ -58,8 +53,6 @@ class ObjectMemory {
   MemoryFit fit(const cv::Mat& gray, cv::Point tl);
   // Where the outline was last placed (the last fit, or the last remembered boundary).
   const Polygon& placed() const { return placed_; }
-  // Moves the placement (the boundary was found elsewhere, e.g. re-acquired).
-  void place(const Polygon& boundary);
 
   // Of `cycle`'s points farther than `distance` from `fitted` (the last fit's outline), the
   // fraction with an edge across the cycle like the one the memory had nearest them: its
@@ -85,10 +78,9 @@ class ObjectMemory {
   // edge has on either side (an occluder's side or a background sheet has other levels).
   std::vector<double> inside_;
   std::vector<double> outside_;
-  Polygon anchor_model_;    // the outline restart() was given, resampled
-  Polygon model_;           // the anchor's outline where it was last learnt
-  Polygon placed_;          // the outline where it was last fitted
-  ShapeDescriptor anchor_;  // affine_shape_descriptor of the outline restart() was given
+  Polygon anchor_model_;  // the outline restart() was given, resampled
+  Polygon model_;         // the anchor's outline where it was last learnt
+  Polygon placed_;        // the outline where it was last fitted
 };
 
 // `polygon` resampled to `n` points evenly spaced along its length, from its first vertex.

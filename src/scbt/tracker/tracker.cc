@@ -358,12 +358,11 @@ TrackResult Tracker::Impl::track(const cv::Mat& frame) {
         ++blur_frames_waited_ >= options_.blur.measure_every) {
       measure_edge_blur(gray_, a->roi.tl());
     }
+    // The memory learns the place and view of a confident cycle that runs along its outline.
     if (options_.object_memory && result.confidence >= options_.loss.tracking_confidence &&
-        gray_roi_ == a->roi && memory_.keeps_shape(boundary_) &&
+        gray_roi_ == a->roi &&
         (!fit.valid ||
-         (memory_.mismatch(boundary_, fit.outline, near_outline(fit.outline)) <= kAgreeMismatch &&
-          memory_.departure_support(boundary_, fit.outline, -1.0, gray_, gray_roi_.tl()) >=
-              kLearnSupport))) {
+         memory_.mismatch(boundary_, fit.outline, near_outline(fit.outline)) <= kAgreeMismatch)) {
       memory_.remember(boundary_, gray_, a->roi.tl());
     }
     // This frame's appearance replaces a pending one, which need not be read first.

@@ -236,10 +236,6 @@ class Tracker::Impl {
   // at least kResumeVisible of its outline is seen (*result filled).
   bool resume_from_memory(const cv::Mat& frame, TrackResult* result);
   static constexpr double kResumeVisible = 0.85;
-  // The fraction of a taken cycle's outline with the object's edges (polarity, contrast, the
-  // levels on either side) for the memory to learn it: a cycle that took in an occluder's side
-  // as the occluder crept over the object, each frame a little, is not learnt.
-  static constexpr double kLearnSupport = 0.8;
   // A cycle along the fitted outline but for at most this fraction of it agrees with the memory.
   static constexpr double kAgreeMismatch = 0.15;
   // The least visible fraction the memory's fitted outline stands in for the object with.
