@@ -62,9 +62,9 @@ SequenceGap sequence_gap(const EvalRunOptions& options, int frames) {
     case GapVariantKind::kNone:
       return SequenceGap();
     case GapVariantKind::kGrey:
-      return SequenceGap::grey(frames);
+      return SequenceGap::grey(frames, 30, options.gap_position);
     case GapVariantKind::kDrop:
-      return SequenceGap::drop(frames);
+      return SequenceGap::drop(frames, 60, options.gap_position);
   }
   return SequenceGap();
 }

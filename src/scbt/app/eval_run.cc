@@ -125,6 +125,10 @@ void EvalRunOptions::check() const {
   if (gap != GapVariantKind::kNone && perturbation.frame_stride() != 1) {
     throw std::invalid_argument("gap variants (--gaps) cannot be combined with a frame stride");
   }
+  if (!(gap_position > 0.0 && gap_position < 1.0)) {
+    throw std::invalid_argument("--gap-at " + std::to_string(gap_position) +
+                                " must be in (0, 1) of the sequence");
+  }
   const std::vector<std::string> known = polygon_tracker_names();
   std::set<std::string> names;
   std::set<std::string> trackers_run;

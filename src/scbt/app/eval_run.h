@@ -34,6 +34,7 @@ struct EvalRunOptions {
   // A gap variant of every sequence (eval/sequence_gap.h), starting at its middle: 30 grey frames
   // or 60 dropped frames. The gap's frames are not scored. Not with a frame stride.
   GapVariantKind gap = GapVariantKind::kNone;
+  double gap_position = 0.5;  // where the gap starts, as a fraction of each sequence: (0, 1)
 
   // Throws std::invalid_argument naming the first bad value (no file system access).
   void check() const;

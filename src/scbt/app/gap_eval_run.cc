@@ -50,9 +50,10 @@ void write_tables(const GapEvalSummary& summary, const std::string& out,
   AtomicFile md((fs::path(out) / "gaps_summary.md").string());
   AtomicFile csv((fs::path(out) / "gaps_summary.csv").string());
   md.stream() << "# scbt: confidence and re-acquisition on gap variants\n\n"
-              << "Each sequence as it is (clean) and with a gap from its middle: grey30 = 30 "
-                 "frames replaced by uniform grey (1 s at 30 fps), jump60 = 60 frames dropped (a "
-                 "2 s jump). ROC AUC of the confidence against E_AL >= 10 px over the scored "
+              << "Each sequence as it is (clean) and with a gap from its middle (or from the "
+                 "fraction after @): grey30 = 30 frames replaced by uniform grey (1 s at 30 fps), "
+                 "jump60 = 60 frames dropped (a 2 s jump). ROC AUC of the confidence against E_AL "
+                 ">= 10 px over the scored "
                  "frames (the gap's are not scored); delay = frames from the end of the gap to the "
                  "first right frame in state `tracking`; after = S@10 from that frame on. "
                  "Pooled: AUC over all frames, the worst delay, S@10 over all frames after "
@@ -91,20 +92,36 @@ void write_tables(const GapEvalSummary& summary, const std::string& out,
 
 }  // namespace
 
-GapEvalSummary run_gap_evals(const EvalRunOptions& base, std::ostream& log) {
+GapEvalSummary run_gap_evals(const EvalRunOptions& base, std::ostream& log,
+                             const std::vector<double>& positions) {
   base.check();
   if (base.perturbation.frame_stride() != 1) {
     throw std::invalid_argument("--gaps cannot be combined with a frame stride");
   }
+  if (positions.empty()) throw std::invalid_argument("--gap-at: no position given");
+  for (double p : positions) {
+    if (!(p > 0.0 && p < 1.0)) {
+      throw std::invalid_argument("--gap-at: a position must be in (0, 1) of the sequence, got " +
+                                  format("%g", p));
+    }
+  }
+  // One position in the middle keeps the plain names; others are named by where they start.
+  const bool named_by_position = positions.size() > 1 || positions.front() != 0.5;
   GapEvalSummary summary;
-  for (GapVariantKind kind :
-       {GapVariantKind::kNone, GapVariantKind::kGrey, GapVariantKind::kDrop}) {
+  const auto run = [&](GapVariantKind kind, double position) {
     EvalRunOptions options = base;
     options.gap = kind;
-    const std::string variant = sequence_gap_name(kind);
+    options.gap_position = position;
+    std::string variant = sequence_gap_name(kind);
+    if (kind != GapVariantKind::kNone && named_by_position) variant += format("@%g", position);
     options.out = (fs::path(base.out) / variant).string();
     if (!base.quiet) log << "eval: " << variant << " -> " << options.out << '\n';
     summary.runs.push_back({variant, run_eval(options, log)});
+  };
+  run(GapVariantKind::kNone, 0.5);
+  for (double position : positions) {
+    run(GapVariantKind::kGrey, position);
+    run(GapVariantKind::kDrop, position);
   }
   write_tables(summary, base.out, &summary.files);
   return summary;

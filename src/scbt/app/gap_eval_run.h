@@ -13,7 +13,9 @@
 namespace scbt {
 
 struct GapEvalRun {
-  std::string variant;  // clean, grey30, jump60: also the folder OUT/<variant>
+  // clean, grey30, jump60 (a gap from the middle) or grey30@0.2 (from 20 % of each sequence):
+  // also the folder OUT/<variant>
+  std::string variant;
   EvalRunSummary summary;
 };
 
@@ -22,8 +24,10 @@ struct GapEvalSummary {
   std::vector<std::string> files;  // gaps_summary.md first, then gaps_summary.csv
 };
 
-// Runs `base` (its gap ignored) as it is and with each gap variant into OUT/<variant>, then
-// writes OUT/gaps_summary.md and OUT/gaps_summary.csv. Throws like run_eval.
-GapEvalSummary run_gap_evals(const EvalRunOptions& base, std::ostream& log);
+// Runs `base` (its gap ignored) as it is and with each gap variant at each of `positions`
+// (fractions of each sequence) into OUT/<variant>, then writes OUT/gaps_summary.md and
+// OUT/gaps_summary.csv. Throws like run_eval.
+GapEvalSummary run_gap_evals(const EvalRunOptions& base, std::ostream& log,
+                             const std::vector<double>& positions = {0.5});
 
 }  // namespace scbt

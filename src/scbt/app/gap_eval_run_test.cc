@@ -75,5 +75,42 @@ TEST(GapEvalRunTest, GreyAndDroppedGapsAreLostFoundAgainAndReported) {
   fs::remove_all(root);
 }
 
+// Several positions: each variant at each, named by where it starts, its gap where it says.
+TEST(GapEvalRunTest, GapsAtSeveralPositionsAreEachRunAndNamed) {
+  constexpr int kFrames = 200;
+  const fs::path root =
+      fs::temp_directory_path() / ("scbt-gap-positions-" + std::to_string(::getpid()));
+  fs::remove_all(root);
+  write_synthetic_sequence(root / "data", "Drift", SceneShape::kBox, {120.0, 120.0}, {0.3, 0.1}, 5,
+                           kFrames);
+  EvalRunOptions options;
+  options.dataset = (root / "data").string();
+  options.out = (root / "out").string();
+  options.trackers = {"bdsp"};
+  options.quiet = true;
+  options.jobs = 2;
+  const GapEvalSummary summary = run_gap_evals(options, std::cerr, {0.2, 0.6});
+  ASSERT_EQ(summary.runs.size(), 5u);
+  const char* names[] = {"clean", "grey30@0.2", "jump60@0.2", "grey30@0.6", "jump60@0.6"};
+  for (size_t v = 0; v < 5; ++v) {
+    EXPECT_EQ(summary.runs[v].variant, names[v]);
+    EXPECT_TRUE(fs::exists(root / "out" / names[v] / "report.md")) << names[v];
+  }
+  // Grey frames are tracked (a line each), dropped ones are not (none).
+  EXPECT_EQ(read_text_lines((root / "out" / "grey30@0.6" / "bdsp" / "Drift.txt").string()).size(),
+            static_cast<size_t>(kFrames));
+  EXPECT_EQ(read_text_lines((root / "out" / "jump60@0.2" / "bdsp" / "Drift.txt").string()).size(),
+            static_cast<size_t>(kFrames - 60));
+  for (size_t v = 1; v < 5; ++v) {
+    const LossRow* row = find_row(summary.runs[v].summary, "bdsp");
+    ASSERT_NE(row, nullptr);
+    EXPECT_GE(row->scores.reacquire_delay, 0) << names[v] << ": never found again";
+    EXPECT_LE(row->scores.reacquire_delay, 10) << names[v];
+  }
+  EXPECT_THROW(run_gap_evals(options, std::cerr, {1.2}), std::invalid_argument);
+  EXPECT_THROW(run_gap_evals(options, std::cerr, {0.95}), std::invalid_argument);
+  fs::remove_all(root);
+}
+
 }  // namespace
 }  // namespace scbt

@@ -33,6 +33,7 @@ void add_eval_command(CLI::App& app, int* exit_code) {
   auto perturb = std::make_shared<std::string>();
   auto perturb_seed = std::make_shared<unsigned long long>(1);
   auto gaps = std::make_shared<bool>(false);
+  auto gap_at = std::make_shared<std::vector<double>>();
   CLI::App* command = app.add_subcommand(
       "eval",
       "Run trackers over a dataset laid out like the public one (or score existing results) "
@@ -79,6 +80,12 @@ void add_eval_command(CLI::App& app, int* exit_code) {
       "uniform grey, 60 frames dropped (a 2 s jump); into OUT/clean, OUT/grey30, OUT/jump60, plus "
       "OUT/gaps_summary.md/.csv: confidence ROC AUC, re-acquisition delay, S@10 after it "
       "(docs/loss-handling.md)");
+  command
+      ->add_option("--gap-at", *gap_at,
+                   "With --gaps: where the gaps start, as fractions of each sequence, comma "
+                   "separated (default 0.5); each variant is run at each, into OUT/grey30@F and "
+                   "OUT/jump60@F")
+      ->delimiter(',');
   command->add_flag("--no-plot", *no_plot, "Do not write success_curves.png");
   command->add_flag("-q,--quiet", options->quiet, "No progress output");
   command->add_flag("--list", *list, "List the trackers and the dataset's sequences, then exit");
@@ -88,7 +95,8 @@ void add_eval_command(CLI::App& app, int* exit_code) {
         "eval writes a folder: give it as --out DIR (-o is track's results file)");
   });
   auto flags = add_tracker_options(command);
-  command->callback([options, flags, list, no_plot, perturb, perturb_seed, gaps, exit_code] {
+  command->callback([options, flags, list, no_plot, perturb, perturb_seed, gaps, gap_at,
+                     exit_code] {
     if (flags->apply(&options->tracker)) {
       *exit_code = kExitOk;
       return;
@@ -99,10 +107,12 @@ void add_eval_command(CLI::App& app, int* exit_code) {
       return;
     }
     options->plot = !*no_plot;
+    if (!gap_at->empty() && !*gaps) throw std::invalid_argument("--gap-at needs --gaps");
     if (*gaps) {
       if (!perturb->empty())
         throw std::invalid_argument("--gaps cannot be combined with --perturb");
-      const GapEvalSummary summary = run_gap_evals(*options, std::cerr);
+      const GapEvalSummary summary =
+          run_gap_evals(*options, std::cerr, gap_at->empty() ? std::vector<double>{0.5} : *gap_at);
       if (!options->quiet) std::cout << summary.files.front() << '\n';
       *exit_code = 0;
       return;

@@ -7,29 +7,35 @@
 namespace scbt {
 namespace {
 
-// The gap starts in the middle; at least 10 frames must remain after it to measure anything.
-SequenceGap middle_gap(GapVariantKind kind, int frames, int length) {
+// The gap starts at `position` of the sequence; at least 10 frames must remain after it to
+// measure anything.
+SequenceGap gap_at(GapVariantKind kind, int frames, int length, double position) {
   if (length < 1) throw std::invalid_argument("a gap needs at least one frame");
+  if (!(position > 0.0 && position < 1.0)) {
+    throw std::invalid_argument("a gap's position must be in (0, 1) of the sequence, got " +
+                                std::to_string(position));
+  }
   SequenceGap gap;
   gap.kind = kind;
-  gap.start = frames / 2;
+  gap.start = static_cast<int>(frames * position);
   gap.length = length;
   if (gap.start < 1 || gap.end() + 10 > frames) {
     throw std::invalid_argument("a sequence of " + std::to_string(frames) +
                                 " frames is too short for a gap of " + std::to_string(length) +
-                                " frames in its middle and 10 frames after it");
+                                " frames from frame " + std::to_string(gap.start + 1) +
+                                " and 10 frames after it");
   }
   return gap;
 }
 
 }  // namespace
 
-SequenceGap SequenceGap::grey(int frames, int length) {
-  return middle_gap(GapVariantKind::kGrey, frames, length);
+SequenceGap SequenceGap::grey(int frames, int length, double position) {
+  return gap_at(GapVariantKind::kGrey, frames, length, position);
 }
 
-SequenceGap SequenceGap::drop(int frames, int length) {
-  return middle_gap(GapVariantKind::kDrop, frames, length);
+SequenceGap SequenceGap::drop(int frames, int length, double position) {
+  return gap_at(GapVariantKind::kDrop, frames, length, position);
 }
 
 void SequenceGap::apply(int index, cv::Mat* frame) const {

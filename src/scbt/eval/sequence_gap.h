@@ -23,11 +23,12 @@ struct SequenceGap {
   int start = 0;   // 0-based index of the first frame of the gap
   int length = 0;  // frames in the gap
 
-  // The two variants, the gap starting at the middle of a sequence of `frames` frames:
-  // 30 grey frames (1 s at 30 fps) and 60 dropped frames (a 2 s jump). Throws
-  // std::invalid_argument when the sequence is too short to hold the gap and 10 frames after it.
-  static SequenceGap grey(int frames, int length = 30);
-  static SequenceGap drop(int frames, int length = 60);
+  // The two variants, the gap starting at `position` (a fraction of the sequence; the middle by
+  // default) of a sequence of `frames` frames: 30 grey frames (1 s at 30 fps) and 60 dropped
+  // frames (a 2 s jump). Throws std::invalid_argument when the sequence is too short to hold the
+  // gap there and 10 frames after it, or the position is not in (0, 1).
+  static SequenceGap grey(int frames, int length = 30, double position = 0.5);
+  static SequenceGap drop(int frames, int length = 60, double position = 0.5);
 
   bool in_gap(int index) const {
     return kind != GapVariantKind::kNone && index >= start && index < start + length;

@@ -26,6 +26,16 @@ TEST(SequenceGapTest, VariantsSitInTheMiddleAndNameThemselves) {
   EXPECT_THROW(SequenceGap::grey(100, 0), std::invalid_argument);
 }
 
+TEST(SequenceGapTest, VariantsStartWhereTheirPositionSays) {
+  EXPECT_EQ(SequenceGap::grey(200, 30, 0.2).start, 40);
+  EXPECT_EQ(SequenceGap::drop(200, 60, 0.6).start, 120);
+  EXPECT_EQ(SequenceGap::grey(200, 30, 0.2).name(), "grey30");
+  // Outside (0, 1), or too late for the gap and 10 frames after it.
+  EXPECT_THROW(SequenceGap::grey(200, 30, 0.0), std::invalid_argument);
+  EXPECT_THROW(SequenceGap::grey(200, 30, 1.5), std::invalid_argument);
+  EXPECT_THROW(SequenceGap::drop(200, 60, 0.7), std::invalid_argument);
+}
+
 TEST(SequenceGapTest, GreyFramesBecomeUniformOthersStay) {
   const SequenceGap gap = SequenceGap::grey(100);
   cv::Mat frame(4, 4, CV_8UC3, cv::Scalar(10, 20, 30));
