@@ -49,17 +49,4 @@ StopSignalScope::~StopSignalScope() {
 
 int StopSignalScope::stop_signal() const { return enabled_ ? stop_requested() : 0; }
 
-const char* signal_name(int signal_number) {
-  switch (signal_number) {
-    case SIGINT:
-      return "SIGINT";
-    case SIGTERM:
-      return "SIGTERM";
-    case SIGHUP:
-      return "SIGHUP";
-    default:
-      return "a signal";
-  }
-}
-
 }  // namespace scbt

@@ -30,7 +30,4 @@ class StopSignalScope {
   struct sigaction old_pipe_ {};
 };
 
-// "SIGINT", "SIGTERM", "SIGHUP", else "a signal".
-const char* signal_name(int signal_number);
-
 }  // namespace scbt

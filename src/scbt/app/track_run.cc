@@ -10,6 +10,7 @@
 #include "scbt/app/stop_signal.h"
 #include "scbt/app/track_outputs.h"
 #include "scbt/geometry/polygon_io.h"
+#include "scbt/io/bounded_read.h"
 #include "scbt/io/frame_source.h"
 #include "scbt/io/printable.h"
 #include "scbt/io/same_file.h"

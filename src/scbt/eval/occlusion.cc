@@ -4,8 +4,9 @@
 #include <cmath>
 #include <cstdlib>
 #include <opencv2/imgproc.hpp>
-#include <sstream>
 #include <stdexcept>
+
+#include "scbt/eval/spec_text.h"
 
 namespace scbt {
 namespace {
@@ -34,29 +35,6 @@ const char* shape_name(OccluderShape s) {
       return "hand";
   }
   return "?";
-}
-
-std::string format_number(double v) {
-  std::ostringstream s;
-  s << v;
-  return s.str();
-}
-
-double parse_number(const std::string& text, const std::string& spec) {
-  char* end = nullptr;
-  const double v = std::strtod(text.c_str(), &end);
-  if (text.empty() || end != text.c_str() + text.size() || !std::isfinite(v)) {
-    throw std::invalid_argument("occlusion '" + spec + "': '" + text + "' is not a number; " +
-                                kGrammar);
-  }
-  return v;
-}
-
-std::uint64_t mix(std::uint64_t x) {
-  x += 0x9e3779b97f4a7c15ULL;
-  x = (x ^ (x >> 30)) * 0xbf58476d1ce4e5b9ULL;
-  x = (x ^ (x >> 27)) * 0x94d049bb133111ebULL;
-  return x ^ (x >> 31);
 }
 
 bool usable(const Polygon& p) { return p.size() >= 3 && area(p) > 4.0; }
@@ -177,8 +155,8 @@ double offset_at(const OcclusionEvent& e, OccluderMotion motion, double start_of
 }  // namespace
 
 std::string OcclusionSpec::name() const {
-  return format_number(cover) + "," + format_number(seconds) + "," + shape_name(shape) + "," +
-         (motion == OccluderMotion::kSweep ? "sweep" : "stay") + "," +
+  return format_spec_number(cover) + "," + format_spec_number(seconds) + "," + shape_name(shape) +
+         "," + (motion == OccluderMotion::kSweep ? "sweep" : "stay") + "," +
          (textured ? "textured" : "solid");
 }
 
@@ -206,8 +184,9 @@ OcclusionSpec parse_occlusion_spec(const std::string& text) {
     throw std::invalid_argument("occlusion '" + text + "': too many fields; " + kGrammar);
   }
   OcclusionSpec spec;
-  spec.cover = parse_number(fields[0], text);
-  if (fields.size() > 1) spec.seconds = parse_number(fields[1], text);
+  spec.cover = parse_spec_number(fields[0], "occlusion '" + text + "'", kGrammar);
+  if (fields.size() > 1)
+    spec.seconds = parse_spec_number(fields[1], "occlusion '" + text + "'", kGrammar);
   const auto bad = [&text](const std::string& f) {
     return std::invalid_argument("occlusion '" + text + "': unknown '" + f + "'; " + kGrammar);
   };
@@ -270,7 +249,7 @@ OcclusionPlan::OcclusionPlan(const OcclusionSpec& spec, const std::vector<Polygo
                              std::uint64_t seed)
     : spec_(spec), truth_(truth) {
   spec_.check();
-  cv::RNG rng(mix(seed ^ 0x6f63636c75646555ULL));
+  cv::RNG rng(mix_seed(seed ^ 0x6f63636c75646555ULL));
   const int length = std::max(1, static_cast<int>(std::lround(spec_.seconds * kFps)));
   const int n = static_cast<int>(truth_.size());
   int start = kFirstEventFrom + rng.uniform(0, kFirstEventSpread);

@@ -4,8 +4,9 @@
 #include <cstdlib>
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
-#include <sstream>
 #include <stdexcept>
+
+#include "scbt/eval/spec_text.h"
 
 namespace scbt {
 namespace {
@@ -44,33 +45,9 @@ const char kGrammar[] =
     "brightness:B, contrast:C, gamma:G, lowlight:B[,SIGMA], jpeg:QUALITY, downscale:FACTOR or "
     "occlude:COVER[,SECONDS[,bar|disc|hand[,sweep|stay[,solid|textured]]]]";
 
-std::string format_number(double v) {
-  std::ostringstream s;
-  s << v;
-  return s.str();
-}
-
-double parse_number(const std::string& text, const std::string& spec) {
-  char* end = nullptr;
-  const double v = std::strtod(text.c_str(), &end);
-  if (text.empty() || end != text.c_str() + text.size() || !std::isfinite(v)) {
-    throw std::invalid_argument("perturbation '" + spec + "': '" + text + "' is not a number; " +
-                                kGrammar);
-  }
-  return v;
-}
-
-// SplitMix64: a well-mixed 64-bit hash of (seed, frame) for the per-frame noise generator.
-std::uint64_t mix(std::uint64_t x) {
-  x += 0x9e3779b97f4a7c15ULL;
-  x = (x ^ (x >> 30)) * 0xbf58476d1ce4e5b9ULL;
-  x = (x ^ (x >> 27)) * 0x94d049bb133111ebULL;
-  return x ^ (x >> 31);
-}
-
 void add_noise(const cv::Mat& frame, double sigma, std::uint64_t seed, int frame_index,
                cv::Mat* out) {
-  cv::RNG rng(mix(seed ^ mix(static_cast<std::uint64_t>(frame_index))));
+  cv::RNG rng(mix_seed(seed ^ mix_seed(static_cast<std::uint64_t>(frame_index))));
   cv::Mat noise(frame.size(), CV_32FC(frame.channels()));
   rng.fill(noise, cv::RNG::NORMAL, 0.0, sigma);
   cv::Mat sum;
@@ -107,12 +84,12 @@ std::string Perturbation::name() const {
   std::string n = kind_name(kind);
   if (kind == PerturbationKind::kNone) return n;
   if (kind == PerturbationKind::kOcclude) return n + ":" + occlusion.name();
-  n += ":" + format_number(level);
+  n += ":" + format_spec_number(level);
   if (kind == PerturbationKind::kMotionBlur && parameter != 0.0) {
-    n += "," + format_number(parameter);
+    n += "," + format_spec_number(parameter);
   }
   if (kind == PerturbationKind::kLowLight && parameter != kDefaultLowLightNoise) {
-    n += "," + format_number(parameter);
+    n += "," + format_spec_number(parameter);
   }
   return n;
 }
@@ -262,13 +239,14 @@ Perturbation parse_perturbation(const std::string& spec, std::uint64_t seed) {
     return p;
   }
   const size_t comma = args.find(',');
-  p.level = parse_number(args.substr(0, comma), spec);
+  p.level = parse_spec_number(args.substr(0, comma), "perturbation '" + spec + "'", kGrammar);
   if (p.kind == PerturbationKind::kLowLight) p.parameter = kDefaultLowLightNoise;
   if (comma != std::string::npos) {
     if (p.kind != PerturbationKind::kMotionBlur && p.kind != PerturbationKind::kLowLight) {
       throw std::invalid_argument("perturbation '" + spec + "' takes one level; " + kGrammar);
     }
-    p.parameter = parse_number(args.substr(comma + 1), spec);
+    p.parameter =
+        parse_spec_number(args.substr(comma + 1), "perturbation '" + spec + "'", kGrammar);
   }
   p.check();
   return p;

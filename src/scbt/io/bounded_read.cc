@@ -18,19 +18,6 @@ volatile std::sig_atomic_t g_stop_request = 0;
 
 constexpr std::size_t kChunk = 1 << 16;
 
-const char* name_of(int signal_number) {
-  switch (signal_number) {
-    case SIGINT:
-      return "SIGINT";
-    case SIGTERM:
-      return "SIGTERM";
-    case SIGHUP:
-      return "SIGHUP";
-    default:
-      return "a signal";
-  }
-}
-
 std::runtime_error error_for(const std::string& path, const std::string& what) {
   return std::runtime_error(printable(path) + ": " + what);
 }
@@ -44,7 +31,7 @@ void clear_stop_request() noexcept { g_stop_request = 0; }
 void throw_if_stop_requested(const std::string& what) {
   const int signal_number = stop_requested();
   if (signal_number != 0) {
-    throw Interrupted(what + ": interrupted by " + name_of(signal_number), signal_number);
+    throw Interrupted(what + ": interrupted by " + signal_name(signal_number), signal_number);
   }
 }
 
@@ -176,6 +163,19 @@ std::string read_file_bounded(const std::string& path, const ReadLimit& limit,
                               const InterruptCheck& check) {
   BoundedReader reader(path, limit, check);
   return reader.read_all();
+}
+
+const char* signal_name(int signal_number) {
+  switch (signal_number) {
+    case SIGINT:
+      return "SIGINT";
+    case SIGTERM:
+      return "SIGTERM";
+    case SIGHUP:
+      return "SIGHUP";
+    default:
+      return "a signal";
+  }
 }
 
 }  // namespace scbt

@@ -39,6 +39,8 @@ class Interrupted : public std::runtime_error {
 void request_stop(int signal_number) noexcept;
 int stop_requested() noexcept;  // the signal that requested the stop, else 0
 void clear_stop_request() noexcept;
+// "SIGINT", "SIGTERM", "SIGHUP", else "a signal".
+const char* signal_name(int signal_number);
 // Throws Interrupted "WHAT: interrupted by SIGTERM" when a stop has been requested.
 void throw_if_stop_requested(const std::string& what);
 
