@@ -21,18 +21,26 @@ const LossRow* find_row(const EvalRunSummary& s, const std::string& tracker) {
   return nullptr;
 }
 
-TEST(GapEvalRunTest, GreyAndDroppedGapsAreLostFoundAgainAndReported) {
-  constexpr int kFrames = 140;  // the 60-frame jump from the middle leaves 10 frames after it
-  const fs::path root = fs::temp_directory_path() / ("scbt-gap-eval-" + std::to_string(::getpid()));
+// A rendered box drifting over `frames` frames, written as a dataset under `root` (emptied
+// first), and eval options that run `trackers` on it into root/out.
+EvalRunOptions drift_dataset(const fs::path& root, int frames,
+                             const std::vector<std::string>& trackers) {
   fs::remove_all(root);
   write_synthetic_sequence(root / "data", "Drift", SceneShape::kBox, {120.0, 120.0}, {0.3, 0.1}, 5,
-                           kFrames);
+                           frames);
   EvalRunOptions options;
   options.dataset = (root / "data").string();
   options.out = (root / "out").string();
-  options.trackers = {"bdsp", "static"};
+  options.trackers = trackers;
   options.quiet = true;
   options.jobs = 2;
+  return options;
+}
+
+TEST(GapEvalRunTest, GreyAndDroppedGapsAreLostFoundAgainAndReported) {
+  constexpr int kFrames = 140;  // the 60-frame jump from the middle leaves 10 frames after it
+  const fs::path root = fs::temp_directory_path() / ("scbt-gap-eval-" + std::to_string(::getpid()));
+  const EvalRunOptions options = drift_dataset(root, kFrames, {"bdsp", "static"});
   const GapEvalSummary summary = run_gap_evals(options, std::cerr);
 
   ASSERT_EQ(summary.runs.size(), 3u);
@@ -80,15 +88,7 @@ TEST(GapEvalRunTest, GapsAtSeveralPositionsAreEachRunAndNamed) {
   constexpr int kFrames = 200;
   const fs::path root =
       fs::temp_directory_path() / ("scbt-gap-positions-" + std::to_string(::getpid()));
-  fs::remove_all(root);
-  write_synthetic_sequence(root / "data", "Drift", SceneShape::kBox, {120.0, 120.0}, {0.3, 0.1}, 5,
-                           kFrames);
-  EvalRunOptions options;
-  options.dataset = (root / "data").string();
-  options.out = (root / "out").string();
-  options.trackers = {"bdsp"};
-  options.quiet = true;
-  options.jobs = 2;
+  const EvalRunOptions options = drift_dataset(root, kFrames, {"bdsp"});
   const GapEvalSummary summary = run_gap_evals(options, std::cerr, {0.2, 0.6});
   ASSERT_EQ(summary.runs.size(), 5u);
   const char* names[] = {"clean", "grey30@0.2", "jump60@0.2", "grey30@0.6", "jump60@0.6"};
