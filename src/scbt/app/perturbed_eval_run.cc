@@ -8,6 +8,7 @@
 
 #include "scbt/eval/plot.h"
 #include "scbt/io/atomic_file.h"
+#include "scbt/io/printable.h"
 
 namespace scbt {
 namespace fs = std::filesystem;
@@ -61,8 +62,8 @@ void write_tables(const PerturbedEvalSummary& summary, const std::string& out,
       for (const std::string& seq : rows) {
         const SequenceScore* s = find_score(run.summary, tracker, seq);
         if (s == nullptr) continue;
-        csv.stream() << name << ',' << tracker << ',' << seq << ',' << s->errors.frames << ','
-                     << s->errors.success_5 << ',' << s->errors.success_10 << ','
+        csv.stream() << csv_field(name) << ',' << tracker << ',' << seq << ',' << s->errors.frames
+                     << ',' << s->errors.success_5 << ',' << s->errors.success_10 << ','
                      << s->errors.success_20 << ',' << s->errors.auc << ','
                      << (s->timing.has_timing ? std::to_string(s->timing.held) : "") << '\n';
       }

@@ -82,6 +82,27 @@ TEST_F(PerturbedEvalTest, OneReportPerPerturbationThenTheSummaryAndPlot) {
   }
 }
 
+// An occluder's spec holds commas: the summary quotes it, so every row keeps its 9 columns.
+TEST_F(PerturbedEvalTest, SummaryRowsKeepTheirColumnsWhenASpecHoldsCommas) {
+  options_.trackers = {"static"};
+  run_perturbed_evals(options_, parse_perturbation_list("occlude:0.3,1,bar,sweep,solid"),
+                      std::cerr);
+  const std::vector<std::string> rows =
+      read_text_lines((fs::path(options_.out) / "perturb_summary.csv").string());
+  ASSERT_EQ(rows.size(), 2u);  // header, Slide
+  for (const std::string& row : rows) {
+    // Commas outside quotes.
+    int separators = 0;
+    bool quoted = false;
+    for (char c : row) {
+      if (c == '"') quoted = !quoted;
+      separators += !quoted && c == ',' ? 1 : 0;
+    }
+    EXPECT_EQ(separators, 8) << row;
+  }
+  EXPECT_EQ(rows[1].rfind("\"occlude:0.3,1,bar,sweep,solid\",static,Slide,", 0), 0u) << rows[1];
+}
+
 TEST_F(PerturbedEvalTest, RejectsRepeatsAndEmptyLists) {
   EXPECT_THROW(run_perturbed_evals(options_, parse_perturbation_list("noise:5 noise:5"), std::cerr),
                std::invalid_argument);

@@ -5,6 +5,7 @@
 
 #include "scbt/app/frame_writers.h"
 #include "scbt/geometry/polygon_io.h"
+#include "scbt/io/printable.h"
 #include "scbt/io/same_file.h"
 #include "scbt/render/annotate.h"
 
@@ -14,18 +15,6 @@ namespace {
 void write_csv_header(std::ostream& csv) {
   csv << "frame,held,state,confidence,visible,cost,area_similarity,detected,kept,vertices,edges,"
          "candidates,line_ms,grouping_ms,total_ms,note\n";
-}
-
-// The note is free text: quoted, with inner quotes doubled, when it holds a comma or quote.
-std::string csv_field(const std::string& text) {
-  if (text.find_first_of(",\"\n") == std::string::npos) return text;
-  std::string quoted = "\"";
-  for (char c : text) {
-    if (c == '\n') c = ' ';
-    quoted += c;
-    if (c == '"') quoted += '"';
-  }
-  return quoted + '"';
 }
 
 void write_csv_row(std::ostream& csv, int frame, const TrackResult& r, const std::string& note) {

@@ -358,5 +358,12 @@ TEST(Printable, ControlCharactersCannotStartANewLine) {
   EXPECT_EQ(printable("a\nscbt: error: b\x1b[2J"), "a\\nscbt: error: b\\x1b[2J");
 }
 
+TEST(CsvField, QuotedOnlyWhenItWouldSplitTheRecord) {
+  EXPECT_EQ(csv_field("jpeg:95"), "jpeg:95");
+  EXPECT_EQ(csv_field("occlude:0.3,2,bar"), "\"occlude:0.3,2,bar\"");
+  EXPECT_EQ(csv_field("say \"hi\""), "\"say \"\"hi\"\"\"");
+  EXPECT_EQ(csv_field("two\nlines\r"), "\"two lines \"");
+}
+
 }  // namespace
 }  // namespace scbt
