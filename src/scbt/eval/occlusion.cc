@@ -262,6 +262,7 @@ OcclusionPlan::OcclusionPlan(const OcclusionSpec& spec, const std::vector<Polygo
     e.texture_seed = rng.next();
     const Polygon& at = truth_[start + length / 2];
     if (usable(at)) {
+      e.scale = std::sqrt(area(at));
       const ObjectFrame f = object_frame(at, e.direction);
       const double extent = std::max(1.0, std::max(f.along, f.across));
       if (spec_.motion == OccluderMotion::kSweep) {
@@ -323,17 +324,28 @@ const OcclusionEvent* OcclusionPlan::event_at(int index) const {
   return nullptr;
 }
 
+OcclusionEvent OcclusionPlan::scaled_to(const OcclusionEvent& e, int index) const {
+  OcclusionEvent scaled = e;
+  if (e.scale > 0.0) {
+    const double s = std::sqrt(area(truth_[index])) / e.scale;
+    scaled.size *= s;
+    scaled.stay_offset *= s;
+  }
+  return scaled;
+}
+
 std::vector<Polygon> OcclusionPlan::occluder_parts(const OcclusionEvent& e, int index) const {
   if (index < 0 || index >= static_cast<int>(truth_.size()) || !usable(truth_[index])) return {};
   const ObjectFrame f = object_frame(truth_[index], e.direction);
-  return parts_at(spec_.shape, e.size, f, occluder_point(e, index),
+  return parts_at(spec_.shape, scaled_to(e, index).size, f, occluder_point(e, index),
                   spec_.motion == OccluderMotion::kStay);
 }
 
 Point OcclusionPlan::occluder_point(const OcclusionEvent& e, int index) const {
   const ObjectFrame f = object_frame(truth_[index], e.direction);
-  const double r = reach(spec_.shape, e.size);
-  return f.centre + f.u * offset_at(e, spec_.motion, -(f.along + r), f.along + r, index);
+  const OcclusionEvent scaled = scaled_to(e, index);
+  const double r = reach(spec_.shape, scaled.size);
+  return f.centre + f.u * offset_at(scaled, spec_.motion, -(f.along + r), f.along + r, index);
 }
 
 double OcclusionPlan::hidden_fraction(int index) const {

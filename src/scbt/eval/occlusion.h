@@ -1,9 +1,10 @@
 // Seeded occluders drawn over a sequence, to measure tracking through partial occlusion: a bar (a
 // bottle, a gripper's finger), a disc or a hand-like blob, one colour or textured, passing over the
 // object at several positions of the sequence. Each event hides about `cover` of the object's
-// outline at its worst (measured on the ground-truth outline of the event's first frame) and lasts
-// `seconds`; between events the object is in plain view for 2-5 s, so that each event also
-// measures how fast tracking comes back.
+// outline at its worst (sized on the ground-truth outline of the event's middle frame; the
+// occluder grows and shrinks with the object, so an approaching camera does not change how much
+// it hides) and lasts `seconds`; between events the object is in plain view for 2-5 s, so that each
+// event also measures how fast tracking comes back.
 //
 // Spec (the part after "occlude:" in a perturbation spec, eval/perturb.h):
 //   COVER[,SECONDS[,SHAPE[,MOTION[,FILL]]]]
@@ -48,9 +49,12 @@ struct OcclusionEvent {
   int start = 0;           // 0-based frame index of the first occluded frame
   int length = 0;          // frames
   double direction = 0.0;  // radians: the way the occluder moves (sweep) or comes in (stay)
-  double size = 0.0;       // bar width, disc radius or hand scale (px)
-  double stay_offset =
-      0.0;  // stay: where it stops, along `direction` from the object's centre (px)
+  // Bar width, disc radius or hand scale and (stay) where it stops along `direction` from the
+  // object's centre, in pixels of the frame whose truth has scale `scale` (the square root of its
+  // area); other frames scale both with their truth.
+  double size = 0.0;
+  double stay_offset = 0.0;
+  double scale = 0.0;
   cv::Scalar colour;
   std::uint64_t texture_seed = 0;
   int end() const { return start + length; }
@@ -78,6 +82,8 @@ class OcclusionPlan {
   std::vector<Polygon> occluder_parts(const OcclusionEvent& event, int index) const;
   // The occluder's reference point in frame `index` (its leading end, or its centre).
   Point occluder_point(const OcclusionEvent& event, int index) const;
+  // `event` with its size and stay offset scaled to frame `index`'s truth.
+  OcclusionEvent scaled_to(const OcclusionEvent& event, int index) const;
 
   OcclusionSpec spec_;
   std::vector<Polygon> truth_;

@@ -10,14 +10,17 @@
 namespace scbt {
 namespace {
 
-// A circle of radius 60 drifting right by 0.3 px a frame, over `frames` frames.
-std::vector<Polygon> drifting_circle(int frames) {
+// A circle of radius 60 drifting right by 0.3 px a frame, over `frames` frames; with
+// `approaching`, its radius swings between 60 / 1.6 and 60 x 1.6 every 60 frames (a camera moving
+// to and from it, as fast as in the public Bowl sequence).
+std::vector<Polygon> drifting_circle(int frames, bool approaching = false) {
   std::vector<Polygon> truth;
   for (int k = 0; k < frames; ++k) {
     Polygon p;
+    const double r = approaching ? 60 * std::pow(1.6, std::sin(2 * CV_PI * k / 120)) : 60.0;
     for (int i = 0; i < 48; ++i) {
       const double t = 2 * CV_PI * i / 48;
-      p.emplace_back(250 + 0.3 * k + 60 * std::cos(t), 240 + 60 * std::sin(t));
+      p.emplace_back(250 + 0.3 * k + r * std::cos(t), 240 + r * std::sin(t));
     }
     truth.push_back(p);
   }
@@ -57,6 +60,17 @@ TEST_P(OcclusionPlanTest, HidesTheCoverAtTheWorstFrameOfEachEvent) {
   const OcclusionSpec spec = parse_occlusion_spec(GetParam());
   const std::vector<Polygon> truth = drifting_circle(600);
   for (std::uint64_t seed : {1u, 2u, 3u}) {
+    // The occluder follows the object's scale: while it stays (the middle half of the event), it
+    // hides the same fraction of an outline growing or shrinking by 1.6x as of a steady one.
+    const OcclusionPlan steady(spec, truth, seed);
+    const OcclusionPlan moving(spec, drifting_circle(600, true), seed);
+    for (const OcclusionEvent& e : steady.events()) {
+      for (int k = e.start + e.length / 4 + 1; k < e.end() - e.length / 4 - 1; ++k) {
+        if (spec.motion != OccluderMotion::kStay) break;
+        EXPECT_NEAR(moving.hidden_fraction(k), steady.hidden_fraction(k), 0.05)
+            << GetParam() << " seed " << seed << " frame " << k;
+      }
+    }
     const OcclusionPlan plan(spec, truth, seed);
     ASSERT_GE(plan.events().size(), 2u) << seed;
     for (const OcclusionEvent& e : plan.events()) {
