@@ -117,7 +117,8 @@ void ObjectMemory::restart(const Polygon& boundary, const cv::Mat& gray, cv::Poi
   read_edges(gray, tl);
 }
 
-void ObjectMemory::remember(const Polygon& boundary, const cv::Mat& gray, cv::Point tl) {
+void ObjectMemory::remember(const Polygon& boundary, const cv::Mat& gray, cv::Point tl,
+                            double shape_rate) {
   if (!ready()) {
     restart(boundary, gray, tl);
     return;
@@ -148,6 +149,13 @@ void ObjectMemory::remember(const Polygon& boundary, const cv::Mat& gray, cv::Po
                         ay.at<double>(0) * p.x + ay.at<double>(1) * p.y + ay.at<double>(2));
     }
   }
+  if (shape_rate > 0.0) {
+    for (Point& p : mapped) p += (closest_point_on(boundary, p) - p) * shape_rate;
+    // Evenly spaced again (closest points bunch at corners); the anchor is the new shape.
+    mapped = resample_outline(mapped, static_cast<int>(n));
+    if (mapped.size() != n) return;
+    anchor_model_ = mapped;
+  }
   model_ = mapped;
   placed_ = mapped;
   read_edges(gray, tl);
@@ -177,6 +185,35 @@ void ObjectMemory::read_edges(const cv::Mat& gray, cv::Point tl) {
   }
 }
 
+MemoryFit ObjectMemory::search(const cv::Mat& gray, cv::Point tl, double radius,
+                               double accept_visible) {
+  const Polygon start = placed_;
+  // Starting places two search reaches apart: every place within `radius` is within one reach
+  // (along each axis) of one of them.
+  const double spacing = 2.0 * options_.search_px;
+  const int steps = static_cast<int>(std::ceil(radius / spacing));
+  MemoryFit best;
+  double best_distance = 0.0;
+  for (int iy = -steps; iy <= steps; ++iy) {
+    for (int ix = -steps; ix <= steps; ++ix) {
+      placed_ = start;
+      const Point shift(ix * spacing, iy * spacing);
+      for (Point& p : placed_) p += shift;
+      const MemoryFit f = fit(gray, tl);
+      if (!f.valid) continue;
+      // Ties go to the nearer start: the object moves little between frames.
+      const double distance = std::hypot(shift.x, shift.y);
+      if (!best.valid || f.visible > best.visible ||
+          (f.visible == best.visible && distance < best_distance)) {
+        best = f;
+        best_distance = distance;
+      }
+    }
+  }
+  placed_ = best.valid && best.visible >= accept_visible ? best.outline : start;
+  return best;
+}
+
 MemoryFit ObjectMemory::fit(const cv::Mat& gray, cv::Point tl) {
   MemoryFit result;
   if (!ready() || gray.empty()) return result;
@@ -194,7 +231,7 @@ MemoryFit ObjectMemory::fit(const cv::Mat& gray, cv::Point tl) {
     for (size_t i = 0; i < n; ++i) {
       found[i] = std::nan("");
       if (polarity_[i] == 0.0) continue;
-      const double need = std::max(options_.min_step, 0.4 * contrast_[i]);
+      const double need = edge_need(i);
       double best_score = 0.0;
       for (double k = -reach; k <= reach; k += 1.0) {
         double step = 0.0;
@@ -314,24 +351,44 @@ double ObjectMemory::departure_support(const Polygon& cycle, const Polygon& fitt
         nearest = j;
       }
     }
-    const double need = std::max(options_.min_step, 0.4 * contrast_[nearest]);
-    bool edge = false;
-    for (double k : {-1.0, 0.0, 1.0}) {
-      double step = 0.0;
-      if (!step_at(gray, tl, samples[i], normals[i], k, &step)) continue;
-      const double response =
-          polarity_[nearest] != 0.0 ? polarity_[nearest] * step : std::abs(step);
-      if (response >= need) {
-        edge = true;
-        break;
-      }
-    }
-    if (!edge) continue;
-    // The object's edge has the object on its inside and what surrounds it outside.
-    if (!sides_match(gray, tl, samples[i], normals[i], nearest)) continue;
+    if (!own_edge_near(nearest, gray, tl, samples[i], normals[i])) continue;
     ++supported;
   }
   return departing == 0 ? 1.0 : static_cast<double>(supported) / departing;
+}
+
+double ObjectMemory::edge_need(size_t point) const {
+  return std::max(options_.min_step, 0.4 * contrast_[point]);
+}
+
+bool ObjectMemory::own_edge_near(size_t point, const cv::Mat& gray, cv::Point tl, Point p,
+                                 Point normal) const {
+  for (double k : {-1.0, 0.0, 1.0}) {
+    double step = 0.0;
+    if (!step_at(gray, tl, p, normal, k, &step)) continue;
+    const double response = polarity_[point] != 0.0 ? polarity_[point] * step : std::abs(step);
+    if (response >= edge_need(point)) {
+      // The object's edge has the object on its inside and what surrounds it outside.
+      return sides_match(gray, tl, p, normal, point);
+    }
+  }
+  return false;
+}
+
+double ObjectMemory::explained_by(const Polygon& cycle, const Polygon& fitted, double distance,
+                                  const cv::Mat& gray, cv::Point tl) const {
+  if (!ready() || fitted.size() != model_.size() || cycle.size() < 3) return 0.0;
+  const std::vector<Point> normals = outward_normals(fitted);
+  int with_edge = 0, explained = 0;
+  for (size_t i = 0; i < fitted.size(); ++i) {
+    if (polarity_[i] == 0.0) continue;
+    ++with_edge;
+    const Point on_cycle = closest_point_on(cycle, fitted[i]);
+    const Point d = on_cycle - fitted[i];
+    if (d.dot(d) > distance * distance) continue;
+    if (own_edge_near(i, gray, tl, on_cycle, normals[i])) ++explained;
+  }
+  return with_edge == 0 ? 0.0 : static_cast<double>(explained) / with_edge;
 }
 
 double ObjectMemory::mismatch(const Polygon& outline, const Polygon& other, double distance) const {

@@ -1,10 +1,11 @@
 // What the tracker remembers of the object beyond the last boundary: its outline as a fixed
 // number of points, each with the polarity, contrast and side levels of the edge it had there.
-// The outline's shape is the one it was started with (the anchor); confident frames whose
-// boundary agrees with it move it by an affine map (place and view) and refresh the edges. Each
-// frame the remembered outline is fitted to
-// the image (each point looks along its normal for an edge of its own polarity; a similarity
-// transform is fitted to the points that found one, robustly), which gives
+// Confident frames whose boundary agrees with it move it by an affine map (place and view),
+// refresh the edges and, when all of it is seen, move its shape a little towards theirs; a
+// boundary that departs from it along the object's own edges restarts it (a new view). Each frame
+// the remembered outline is fitted to the image (each point looks along its normal for an edge of
+// its own polarity; a similarity transform is fitted to the points that found one, robustly),
+// from its last place or, when that fails, from places around it (search()), which gives
 //  - where the object is even when part of it is hidden: the fitted outline, hidden part
 //    predicted from the visible one;
 //  - how much of it is visible: the fraction of points whose edge was found where the fit puts
@@ -47,8 +48,16 @@ class ObjectMemory {
   // Learns from `boundary`, tracked confidently in the grey window `gray` (whose top-left corner
   // is `tl` in the frame): the remembered outline is the anchor's mapped onto it by an affine map
   // (its place and view, not its shape), and each point whose edge is clear there takes that
-  // edge's polarity, contrast and side levels. The first call restarts.
-  void remember(const Polygon& boundary, const cv::Mat& gray, cv::Point tl);
+  // edge's polarity, contrast and side levels. With `shape_rate` > 0 the outline's shape also
+  // moves that fraction of the way onto the boundary (a slow change of view is followed; a few
+  // frames of a boundary cut short by an occluder are not). The first call restarts.
+  void remember(const Polygon& boundary, const cv::Mat& gray, cv::Point tl,
+                double shape_rate = 0.0);
+  // Fits the remembered outline from starting places on a grid up to `radius` px around where it
+  // was last placed (the last place included) and returns the fit that sees most of it: the
+  // object found again when the last place went wrong. It becomes the new place only when it sees
+  // at least `accept_visible` of the outline (a poor fit elsewhere must not carry the memory off).
+  MemoryFit search(const cv::Mat& gray, cv::Point tl, double radius, double accept_visible);
   // Fits the remembered outline to the grey window, starting from where it was last placed.
   MemoryFit fit(const cv::Mat& gray, cv::Point tl);
   // Where the outline was last placed (the last fit, or the last remembered boundary).
@@ -61,6 +70,13 @@ class ObjectMemory {
   // along an occluder or the background does not.
   double departure_support(const Polygon& cycle, const Polygon& fitted, double distance,
                            const cv::Mat& gray, cv::Point tl) const;
+  // The fraction of the memory's points (those with a clear edge) whose own edge (polarity,
+  // contrast, side levels) `cycle` runs along within `distance` of where `fitted` (the last fit's
+  // outline) puts them: near 1 when the cycle is the object seen from a view the remembered
+  // outline cannot be moved onto; an occluder's side or a leak into the background leaves the
+  // hidden or bypassed part unexplained.
+  double explained_by(const Polygon& cycle, const Polygon& fitted, double distance,
+                      const cv::Mat& gray, cv::Point tl) const;
   // The fraction of `outline`'s points (as resampled by the memory) farther than `distance`
   // from `other`, and the same the other way round: the larger of the two.
   double mismatch(const Polygon& outline, const Polygon& other, double distance) const;
@@ -70,6 +86,11 @@ class ObjectMemory {
   // Whether the grey levels either side of `p` (across `normal`) are those memory point `point`
   // had: the object inside, its surroundings outside (true when either is unknown).
   bool sides_match(const cv::Mat& gray, cv::Point tl, Point p, Point normal, size_t point) const;
+  // The least step that counts as memory point `point`'s edge.
+  double edge_need(size_t point) const;
+  // Whether memory point `point`'s own edge crosses `normal` within a pixel of `p`: its polarity
+  // (either, if it had no clear edge), at least edge_need(), the remembered levels either side.
+  bool own_edge_near(size_t point, const cv::Mat& gray, cv::Point tl, Point p, Point normal) const;
   // Reads each point's edge at model_ in the grey window (points without a clear one keep theirs).
   void read_edges(const cv::Mat& gray, cv::Point tl);
   std::vector<double> polarity_;  // +1: brighter outside, -1: darker outside, 0: no clear edge

@@ -82,6 +82,94 @@ TEST(ObjectMemory, PlacesAPartlyHiddenObjectAndSaysHowMuchIsVisible) {
   }
 }
 
+// Moved farther than one fit reaches (12 px along the normals), the object is found by the search
+// around the last place; the fit from the last place alone does not see it.
+TEST(ObjectMemory, SearchFindsTheObjectBeyondOneFitsReach) {
+  cv::RNG rng(7);
+  const Polygon start = ellipse_outline({320, 240}, 60, 40);
+  for (const Point shift : {Point(40, 0), Point(-30, 25), Point(0, -45)}) {
+    ObjectMemory memory;
+    memory.remember(start, render(start, &rng), {0, 0});
+    Polygon moved = start;
+    for (Point& p : moved) p += shift;
+    const cv::Mat frame = render(moved, &rng);
+    ObjectMemory alone = memory;
+    const MemoryFit near = alone.fit(frame, {0, 0});
+    EXPECT_TRUE(!near.valid || near.visible < 0.5 || mean_distance(near.outline, moved) > 5.0)
+        << shift;
+    const MemoryFit found = memory.search(frame, {0, 0}, 60.0, 0.85);
+    ASSERT_TRUE(found.valid) << shift;
+    EXPECT_LT(mean_distance(found.outline, moved), 1.0) << shift;
+    EXPECT_GT(found.visible, 0.9) << shift;
+    EXPECT_LT(mean_distance(memory.placed(), moved), 1.0) << shift;
+  }
+  // Nothing like it around: the memory stays where it was.
+  ObjectMemory memory;
+  memory.remember(start, render(start, &rng), {0, 0});
+  cv::Mat clutter(480, 640, CV_8U, cv::Scalar(70));
+  for (int k = 0; k < 40; ++k) {
+    cv::circle(clutter, cv::Point(rng.uniform(0, 640), rng.uniform(0, 480)), rng.uniform(5, 30),
+               cv::Scalar(rng.uniform(0, 256)), cv::FILLED);
+  }
+  const Polygon before = memory.placed();
+  const MemoryFit none = memory.search(clutter, {0, 0}, 60.0, 0.85);
+  EXPECT_TRUE(!none.valid || none.visible < 0.85);
+  EXPECT_EQ(memory.placed(), before);
+}
+
+// A cycle along the object's own edges explains the memory's points even where it departs from
+// the remembered outline (a new view: the ellipse wider on one side); a cycle cut short along an
+// occluder's side leaves the hidden part unexplained.
+TEST(ObjectMemory, ExplainedByTheObjectsOwnEdgesNotByAnOccludersSide) {
+  cv::RNG rng(11);
+  const Polygon start = ellipse_outline({320, 240}, 90, 60, 72);
+  ObjectMemory memory;
+  memory.remember(start, render(start, &rng), {0, 0});
+  Polygon turned = start;  // the right half up to 32 px wider: no affine map of the start fits it
+  for (Point& p : turned) {
+    if (p.x > 320) p.x += 32.0 * (p.x - 320) / 90.0 * (1.0 - std::abs(p.y - 240) / 60.0);
+  }
+  const cv::Mat turned_frame = render(turned, &rng);
+  ObjectMemory seen = memory;
+  const MemoryFit fit = seen.fit(turned_frame, {0, 0});
+  ASSERT_TRUE(fit.valid);
+  EXPECT_GT(seen.mismatch(turned, fit.outline, 6.5), 0.15);  // it departs from the memory
+  EXPECT_GE(seen.explained_by(turned, fit.outline, 6.5, turned_frame, {0, 0}), 0.85);
+
+  // A bar of the background's level over the right third; the cycle runs along its side.
+  cv::Mat hidden_frame = render(start, &rng);
+  cv::rectangle(hidden_frame, cv::Rect(350, 0, 200, 480), cv::Scalar(70), cv::FILLED);
+  Polygon cut;
+  for (const Point& p : start) cut.emplace_back(std::min(p.x, 350.0), p.y);
+  ObjectMemory hidden = memory;
+  const MemoryFit hidden_fit = hidden.fit(hidden_frame, {0, 0});
+  ASSERT_TRUE(hidden_fit.valid);
+  EXPECT_LT(hidden.explained_by(cut, hidden_fit.outline, 8.0, hidden_frame, {0, 0}), 0.85);
+  EXPECT_GT(hidden.mismatch(cut, hidden_fit.outline, 8.0), 0.15);
+}
+
+// With a shape rate, the remembered outline moves part of the way onto a boundary no affine map
+// of it fits, each time; without one it never takes that shape.
+TEST(ObjectMemory, ShapeRateLearnsANewShapeGradually) {
+  cv::RNG rng(13);
+  const Polygon start = ellipse_outline({320, 240}, 90, 60, 72);
+  Polygon dented = start;  // the top flattened by up to 12 px
+  for (Point& p : dented) p.y = std::max(p.y, 192.0);
+  const cv::Mat frame = render(dented, &rng);
+  ObjectMemory affine_only, learning;
+  affine_only.remember(start, render(start, &rng), {0, 0});
+  learning.remember(start, render(start, &rng), {0, 0});
+  affine_only.remember(dented, frame, {0, 0});
+  learning.remember(dented, frame, {0, 0}, 1.0 / 30.0);
+  const double affine_error = mean_distance(affine_only.placed(), dented);
+  const double one_step = mean_distance(learning.placed(), dented);
+  EXPECT_GT(affine_error, 0.5);
+  EXPECT_LT(one_step, affine_error);
+  EXPECT_GT(one_step, 0.8 * affine_error);  // a small step: one frame does not rewrite it
+  for (int k = 0; k < 150; ++k) learning.remember(dented, frame, {0, 0}, 1.0 / 30.0);
+  EXPECT_LT(mean_distance(learning.placed(), dented), 0.3 * affine_error);
+}
+
 // The mismatch of a cycle that takes in a neighbouring region along part of the outline.
 TEST(ObjectMemory, MismatchCountsTheDepartingPart) {
   const ObjectMemory memory;

@@ -299,17 +299,77 @@ static double near_outline(const Polygon& fitted) {
   return std::max(3.0, 0.05 * std::sqrt(std::max(1.0, area(fitted))));
 }
 
-bool Tracker::Impl::memory_overrides(Attempt* a, const MemoryFit& fit) {
-  // Too little of the object seen to place it from the memory alone.
-  if (fit.visible < kPredictVisible) return false;
-  if (!a->choice) return true;
+MemoryFit Tracker::Impl::search_memory(const cv::Mat& frame) {
+  const double radius = std::min(kMemorySearchMax, 0.5 * std::sqrt(area(memory_.placed())));
+  const cv::Rect roi =
+      detection_roi(memory_.placed(), radius + ObjectMemoryOptions().search_px, frame_size_);
+  if (roi.empty()) return {};
+  to_exposed_gray(frame(roi), &memory_gray_);
+  return memory_.search(memory_gray_, roi.tl(), radius, kResumeVisible);
+}
+
+Tracker::Impl::MemoryCheck Tracker::Impl::check_with_memory(const cv::Mat& frame, Attempt* a) {
+  MemoryCheck check;
+  check.fit = memory_.fit(gray_, gray_roi_.tl());
+  check.verdict = judge_by_memory(a, check.fit);
+  if (check.verdict != MemoryVerdict::kAgrees &&
+      (!check.fit.valid || check.fit.visible < kResumeVisible)) {
+    // Neither the cycle nor the memory where it was placed sees the object well: the memory is
+    // looked for around (it may have slipped while the object was hidden).
+    const MemoryFit found = search_memory(frame);
+    if (found.valid && found.visible >= kResumeVisible &&
+        (!check.fit.valid || found.visible > check.fit.visible)) {
+      check.fit = found;
+      check.verdict = judge_by_memory(a, check.fit);
+    }
+  }
+  return check;
+}
+
+void Tracker::Impl::learn_from_cycle(const MemoryCheck& check, cv::Point tl) {
+  switch (check.verdict) {
+    case MemoryVerdict::kAgrees:
+      // All of it seen and followed: nothing hides a part the cycle could have cut off, so the
+      // memory's shape moves towards the cycle's, slowly; otherwise only its place and view.
+      memory_.remember(boundary_, gray_, tl,
+                       check.fit.visible >= kReshapeVisible ? kShapeRate : 0.0);
+      break;
+    case MemoryVerdict::kUnjudged:
+      memory_.remember(boundary_, gray_, tl);
+      break;
+    case MemoryVerdict::kNewView:
+      memory_.restart(boundary_, gray_, tl);
+      break;
+    case MemoryVerdict::kDeparts:
+    case MemoryVerdict::kStandsIn:
+      break;
+  }
+}
+
+Tracker::Impl::MemoryVerdict Tracker::Impl::judge_by_memory(Attempt* a, const MemoryFit& fit) {
+  if (!fit.valid) return MemoryVerdict::kUnjudged;
+  if (!a->choice) {
+    // Too little of the object seen to place it from the memory alone.
+    return fit.visible >= kPredictVisible ? MemoryVerdict::kStandsIn : MemoryVerdict::kUnjudged;
+  }
   if (!a->assessed) assess(a, boundary_);
   // A cycle along the fitted outline (within a few pixels, or a twentieth of the object's size)
   // but for a small part is the object: kept as found, to the pixel.
   const double near = near_outline(fit.outline);
-  if (memory_.mismatch(a->boundary, fit.outline, near) <= kAgreeMismatch) return false;
+  if (memory_.mismatch(a->boundary, fit.outline, near) <= kAgreeMismatch) {
+    return MemoryVerdict::kAgrees;
+  }
+  // The object's edges, all but a small part, are on the cycle: the view changed beyond what the
+  // memory's outline can follow.
+  if (memory_.explained_by(a->boundary, fit.outline, near, gray_, gray_roi_.tl()) >=
+      kNewViewExplained) {
+    return MemoryVerdict::kNewView;
+  }
+  if (fit.visible < kPredictVisible) return MemoryVerdict::kDeparts;
   // Departing along edges like the object's own: its shape changed, which the memory follows.
-  return memory_.departure_support(a->boundary, fit.outline, near, gray_, gray_roi_.tl()) < 0.7;
+  return memory_.departure_support(a->boundary, fit.outline, near, gray_, gray_roi_.tl()) < 0.7
+             ? MemoryVerdict::kStandsIn
+             : MemoryVerdict::kDeparts;
 }
 
 TrackResult Tracker::Impl::track(const cv::Mat& frame) {
@@ -322,12 +382,14 @@ TrackResult Tracker::Impl::track(const cv::Mat& frame) {
   TrackResult result;
   Attempt* a = search(frame, &result);
 
-  MemoryFit fit;
+  MemoryCheck memory;
   if (options_.object_memory && memory_.ready()) {
-    fit = memory_.fit(gray_, gray_roi_.tl());
-    result.visible = fit.valid ? fit.visible : 0.0;
+    memory = check_with_memory(frame, a);
+    result.visible = memory.fit.valid ? memory.fit.visible : 0.0;
   }
-  if (fit.valid && memory_overrides(a, fit)) {
+  const MemoryFit& fit = memory.fit;
+  const MemoryVerdict verdict = memory.verdict;
+  if (verdict == MemoryVerdict::kStandsIn) {
     // The remembered outline where the visible part of the object puts it. The loss monitor is
     // not told: the object is there, partly hidden; its state says how much is seen.
     boundary_ = fit.outline;
@@ -358,12 +420,9 @@ TrackResult Tracker::Impl::track(const cv::Mat& frame) {
         ++blur_frames_waited_ >= options_.blur.measure_every) {
       measure_edge_blur(gray_, a->roi.tl());
     }
-    // The memory learns the place and view of a confident cycle that runs along its outline.
     if (options_.object_memory && result.confidence >= options_.loss.tracking_confidence &&
-        gray_roi_ == a->roi &&
-        (!fit.valid ||
-         memory_.mismatch(boundary_, fit.outline, near_outline(fit.outline)) <= kAgreeMismatch)) {
-      memory_.remember(boundary_, gray_, a->roi.tl());
+        gray_roi_ == a->roi) {
+      learn_from_cycle(memory, a->roi.tl());
     }
     // This frame's appearance replaces a pending one, which need not be read first.
     if (options_.predict_motion && options_.confirm_motion) appearance_pending_ = false;

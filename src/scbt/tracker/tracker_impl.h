@@ -240,9 +240,38 @@ class Tracker::Impl {
   static constexpr double kAgreeMismatch = 0.15;
   // The least visible fraction the memory's fitted outline stands in for the object with.
   static constexpr double kPredictVisible = 0.35;
-  // Whether this frame's fit of the memory should replace attempt a's choice (none, or one that
-  // departs from the object along part of its outline).
-  bool memory_overrides(Attempt* a, const MemoryFit& fit);
+  // A cycle that departs from the fitted outline yet runs along this fraction of the memory's
+  // own edges is the object seen from a new view (the memory is stale, not the cycle wrong).
+  static constexpr double kNewViewExplained = 0.85;
+  // A confident cycle along the fitted outline with this much of it visible gives the memory its
+  // shape (with less, part may be hidden and cut off by the cycle: only its place and view).
+  static constexpr double kReshapeVisible = 0.9;
+  // The fraction of the way the memory's shape moves onto such a cycle per frame: about a second
+  // (30 frames) to take a new view's shape.
+  static constexpr double kShapeRate = 1.0 / 30.0;
+  // What this frame's fit of the memory says of attempt a's choice.
+  enum class MemoryVerdict {
+    kUnjudged,  // no fit: the cycle is taken and learnt from as without the memory
+    kAgrees,    // along the fitted outline: taken, and the memory learns its place and view
+    kNewView,   // departs, but along the memory's edges: taken, and the memory re-anchored on it
+    kDeparts,   // departs along edges like the object's own: taken, not learnt from
+    kStandsIn,  // none, or departs along edges the object never had: the fitted outline replaces it
+  };
+  MemoryVerdict judge_by_memory(Attempt* a, const MemoryFit& fit);
+  // This frame's fit of the memory (searched for around when neither it nor the cycle sees the
+  // object well) and its verdict on attempt a's choice.
+  struct MemoryCheck {
+    MemoryFit fit;
+    MemoryVerdict verdict = MemoryVerdict::kUnjudged;
+  };
+  MemoryCheck check_with_memory(const cv::Mat& frame, Attempt* a);
+  // What the memory learns from the confident cycle taken this frame (boundary_, found in gray_
+  // at `tl`), by the check's verdict.
+  void learn_from_cycle(const MemoryCheck& check, cv::Point tl);
+  // The memory fitted from places around where it was last placed, up to half the object's size
+  // or kMemorySearchMax px away (ObjectMemory::search), in a window of the frame.
+  MemoryFit search_memory(const cv::Mat& frame);
+  static constexpr double kMemorySearchMax = 72.0;
   bool keep_debug_ = false;
   TrackDebug debug_;
 };
