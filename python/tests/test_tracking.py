@@ -83,15 +83,19 @@ def test_views_are_read_without_copy_and_match_copies(moving_pentagon):
 
 
 def test_gil_released_while_tracking():
-    truth = pentagon((640, 480), 300)
-    frame = render(truth, size=(1280, 960), clutter=3000)
-    # Detection over the whole frame (the widest band) with OpenCV's EdgeDrawing: slow enough to
-    # see another thread run.
-    tracker = scbt.Tracker(filter_distance=1000, max_segments=100, detector="opencv-edlines")
-    tracker.init(frame, truth)
-    start = time.perf_counter()
-    tracker.track(frame)
-    one_call = time.perf_counter() - start
+    # Detection over the whole frame (the widest band) with OpenCV's EdgeDrawing, on a frame grown
+    # until one call takes 20 ms on this machine: slow enough to see another thread run.
+    for scale in (1, 2, 3):
+        size = (1280 * scale, 960 * scale)
+        truth = pentagon((size[0] / 2, size[1] / 2), 300 * scale)
+        frame = render(truth, size=size, clutter=3000 * scale * scale)
+        tracker = scbt.Tracker(filter_distance=1000, max_segments=100, detector="opencv-edlines")
+        tracker.init(frame, truth)
+        start = time.perf_counter()
+        tracker.track(frame)
+        one_call = time.perf_counter() - start
+        if one_call > 0.02:
+            break
     assert one_call > 0.02, "the frame is too easy to measure GIL release"
 
     done = threading.Event()
