@@ -92,7 +92,6 @@ Polygon resample_outline(const Polygon& polygon, int n) {
 }
 
 void ObjectMemory::clear() {
-  model_.clear();
   anchor_model_.clear();
   placed_.clear();
   polarity_.clear();
@@ -108,12 +107,11 @@ void ObjectMemory::restart(const Polygon& boundary, const cv::Mat& gray, cv::Poi
     clear();
     return;
   }
-  model_ = anchor_model_;
-  placed_ = model_;
-  polarity_.assign(model_.size(), 0.0);
-  contrast_.assign(model_.size(), 0.0);
-  inside_.assign(model_.size(), -1.0);
-  outside_.assign(model_.size(), -1.0);
+  placed_ = anchor_model_;
+  polarity_.assign(placed_.size(), 0.0);
+  contrast_.assign(placed_.size(), 0.0);
+  inside_.assign(placed_.size(), -1.0);
+  outside_.assign(placed_.size(), -1.0);
   read_edges(gray, tl);
 }
 
@@ -124,8 +122,9 @@ void ObjectMemory::remember(const Polygon& boundary, const cv::Mat& gray, cv::Po
     return;
   }
   // The anchor's outline mapped onto `boundary` by an affine map (closest points, a few rounds
-  // from where it is placed): the memory takes the boundary's place and view, never its shape, so
-  // that a cycle eaten into by an occluder a little each frame cannot wear the outline away.
+  // from where it is placed): the memory takes the boundary's place and view; its shape changes
+  // only by `shape_rate`, so that a cycle eaten into by an occluder a little each frame cannot wear
+  // the outline away.
   const size_t n = anchor_model_.size();
   Polygon mapped = placed_;
   for (int round = 0; round < 4; ++round) {
@@ -156,27 +155,26 @@ void ObjectMemory::remember(const Polygon& boundary, const cv::Mat& gray, cv::Po
     if (mapped.size() != n) return;
     anchor_model_ = mapped;
   }
-  model_ = mapped;
   placed_ = mapped;
   read_edges(gray, tl);
 }
 
 void ObjectMemory::read_edges(const cv::Mat& gray, cv::Point tl) {
-  const std::vector<Point> normals = outward_normals(model_);
-  for (size_t i = 0; i < model_.size(); ++i) {
+  const std::vector<Point> normals = outward_normals(placed_);
+  for (size_t i = 0; i < placed_.size(); ++i) {
     // The strongest step within a pixel of the outline: a traced outline sits on its edge to a
     // pixel or so. Where none is clear (hidden, or faint there) the point keeps what it had.
     double best = 0.0;
     for (double k : {-1.0, 0.0, 1.0}) {
       double step = 0.0;
-      if (step_at(gray, tl, model_[i], normals[i], k, &step) && std::abs(step) > std::abs(best)) {
+      if (step_at(gray, tl, placed_[i], normals[i], k, &step) && std::abs(step) > std::abs(best)) {
         best = step;
       }
     }
     if (std::abs(best) < options_.min_step) continue;
     double in = 0.0, out = 0.0;
-    if (grey_at(gray, tl, model_[i] - normals[i] * kSideOffset, &in) &&
-        grey_at(gray, tl, model_[i] + normals[i] * kSideOffset, &out)) {
+    if (grey_at(gray, tl, placed_[i] - normals[i] * kSideOffset, &in) &&
+        grey_at(gray, tl, placed_[i] + normals[i] * kSideOffset, &out)) {
       inside_[i] = in;
       outside_[i] = out;
     }
@@ -210,7 +208,11 @@ MemoryFit ObjectMemory::search(const cv::Mat& gray, cv::Point tl, double radius,
       }
     }
   }
-  placed_ = best.valid && best.visible >= accept_visible ? best.outline : start;
+  if (!best.valid || best.visible < accept_visible) {
+    placed_ = start;
+    return {};
+  }
+  placed_ = best.outline;
   return best;
 }
 
@@ -334,7 +336,7 @@ bool ObjectMemory::sides_match(const cv::Mat& gray, cv::Point tl, Point p, Point
 
 double ObjectMemory::departure_support(const Polygon& cycle, const Polygon& fitted, double distance,
                                        const cv::Mat& gray, cv::Point tl) const {
-  if (!ready() || fitted.size() != model_.size()) return 1.0;
+  if (!ready() || fitted.size() != anchor_model_.size()) return 1.0;
   const Polygon samples = resample_outline(cycle, options_.points);
   if (samples.size() < 3) return 1.0;
   const std::vector<Point> normals = outward_normals(samples);
@@ -377,7 +379,7 @@ bool ObjectMemory::own_edge_near(size_t point, const cv::Mat& gray, cv::Point tl
 
 double ObjectMemory::explained_by(const Polygon& cycle, const Polygon& fitted, double distance,
                                   const cv::Mat& gray, cv::Point tl) const {
-  if (!ready() || fitted.size() != model_.size() || cycle.size() < 3) return 0.0;
+  if (!ready() || fitted.size() != anchor_model_.size() || cycle.size() < 3) return 0.0;
   const std::vector<Point> normals = outward_normals(fitted);
   int with_edge = 0, explained = 0;
   for (size_t i = 0; i < fitted.size(); ++i) {

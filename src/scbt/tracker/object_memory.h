@@ -41,7 +41,7 @@ class ObjectMemory {
   explicit ObjectMemory(const ObjectMemoryOptions& options = {}) : options_(options) {}
 
   void clear();
-  bool ready() const { return !model_.empty(); }
+  bool ready() const { return !anchor_model_.empty(); }
   // Forgets everything and remembers `boundary`: its outline becomes the anchor whose affine
   // images the memory holds from then on (remember()).
   void restart(const Polygon& boundary, const cv::Mat& gray, cv::Point tl);
@@ -56,7 +56,8 @@ class ObjectMemory {
   // Fits the remembered outline from starting places on a grid up to `radius` px around where it
   // was last placed (the last place included) and returns the fit that sees most of it: the
   // object found again when the last place went wrong. It becomes the new place only when it sees
-  // at least `accept_visible` of the outline (a poor fit elsewhere must not carry the memory off).
+  // at least `accept_visible` of the outline (a poor fit elsewhere must not carry the memory off);
+  // otherwise the place stays and the returned fit is not valid.
   MemoryFit search(const cv::Mat& gray, cv::Point tl, double radius, double accept_visible);
   // Fits the remembered outline to the grey window, starting from where it was last placed.
   MemoryFit fit(const cv::Mat& gray, cv::Point tl);
@@ -91,7 +92,7 @@ class ObjectMemory {
   // Whether memory point `point`'s own edge crosses `normal` within a pixel of `p`: its polarity
   // (either, if it had no clear edge), at least edge_need(), the remembered levels either side.
   bool own_edge_near(size_t point, const cv::Mat& gray, cv::Point tl, Point p, Point normal) const;
-  // Reads each point's edge at model_ in the grey window (points without a clear one keep theirs).
+  // Reads each point's edge at placed_ in the grey window (points without a clear one keep theirs).
   void read_edges(const cv::Mat& gray, cv::Point tl);
   std::vector<double> polarity_;  // +1: brighter outside, -1: darker outside, 0: no clear edge
   std::vector<double> contrast_;  // |step| at the point when remembered
@@ -99,9 +100,8 @@ class ObjectMemory {
   // edge has on either side (an occluder's side or a background sheet has other levels).
   std::vector<double> inside_;
   std::vector<double> outside_;
-  Polygon anchor_model_;  // the outline restart() was given, resampled
-  Polygon model_;         // the anchor's outline where it was last learnt
-  Polygon placed_;        // the outline where it was last fitted
+  Polygon anchor_model_;  // the outline restart() was given (resampled), or the shape learnt since
+  Polygon placed_;        // the outline where it was last learnt or fitted
 };
 
 // `polygon` resampled to `n` points evenly spaced along its length, from its first vertex.

@@ -302,7 +302,7 @@ static double near_outline(const Polygon& fitted) {
 MemoryFit Tracker::Impl::search_memory(const cv::Mat& frame) {
   const double radius = std::min(kMemorySearchMax, 0.5 * std::sqrt(area(memory_.placed())));
   const cv::Rect roi =
-      detection_roi(memory_.placed(), radius + ObjectMemoryOptions().search_px, frame_size_);
+      detection_roi(memory_.placed(), radius + options_.memory.search_px, frame_size_);
   if (roi.empty()) return {};
   to_exposed_gray(frame(roi), &memory_gray_);
   return memory_.search(memory_gray_, roi.tl(), radius, kResumeVisible);
@@ -316,9 +316,8 @@ Tracker::Impl::MemoryCheck Tracker::Impl::check_with_memory(const cv::Mat& frame
       (!check.fit.valid || check.fit.visible < kResumeVisible)) {
     // Neither the cycle nor the memory where it was placed sees the object well: the memory is
     // looked for around (it may have slipped while the object was hidden).
-    const MemoryFit found = search_memory(frame);
-    if (found.valid && found.visible >= kResumeVisible &&
-        (!check.fit.valid || found.visible > check.fit.visible)) {
+    const MemoryFit found = search_memory(frame);  // valid only when it sees kResumeVisible
+    if (found.valid) {
       check.fit = found;
       check.verdict = judge_by_memory(a, check.fit);
     }
