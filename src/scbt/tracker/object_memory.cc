@@ -262,20 +262,23 @@ MemoryFit ObjectMemory::fit(const cv::Mat& gray, cv::Point tl) {
     Point centre(0, 0);
     for (const Point& p : current) centre += p;
     centre *= 1.0 / n;
-    // A similarity x -> S (x - c) + c + t fitted point-to-line, reweighted against outliers
-    // (Huber) and held towards no change so that a visible side alone does not tilt it.
-    double a = 1.0, b = 0.0, tx = 0.0, ty = 0.0;
+    // An affine map x -> A (x - c) + c + t fitted point-to-line, A = [[a + d, e - b], [b + e,
+    // a - d]]: (a, b) its rotation and scale, (d, e) the stretch a change of view adds to a flat
+    // outline (a rim seen from higher up is a rounder ellipse). Reweighted against outliers and
+    // held towards no change so that a visible side alone does not tilt or stretch it.
+    double a = 1.0, b = 0.0, d = 0.0, e = 0.0, tx = 0.0, ty = 0.0;
     for (int irls = 0; irls < 4; ++irls) {
-      cv::Matx44d ata = cv::Matx44d::zeros();
-      cv::Vec4d atb(0, 0, 0, 0);
+      cv::Matx66d ata = cv::Matx66d::zeros();
+      cv::Vec6d atb(0, 0, 0, 0, 0, 0);
       double weight_sum = 0.0;
       for (size_t i = 0; i < n; ++i) {
         if (std::isnan(found[i])) continue;
         const Point c = current[i] - centre;
         const Point& nn = normals[i];
-        const cv::Vec4d row(nn.x * c.x + nn.y * c.y, nn.y * c.x - nn.x * c.y, nn.x, nn.y);
+        const cv::Vec6d row(nn.x * c.x + nn.y * c.y, nn.y * c.x - nn.x * c.y,
+                            nn.x * c.x - nn.y * c.y, nn.x * c.y + nn.y * c.x, nn.x, nn.y);
         const double rhs = nn.dot(targets[i] - centre);
-        const double predicted = row.dot(cv::Vec4d(a, b, tx, ty));
+        const double predicted = row.dot(cv::Vec6d(a, b, d, e, tx, ty));
         const double r = std::abs(predicted - rhs);
         // Huber on the first pass, then Tukey's biweight: an occluder's edge of the object's
         // polarity next to the hidden outline must not pull the fit at all.
@@ -288,24 +291,28 @@ MemoryFit ObjectMemory::fit(const cv::Mat& gray, cv::Point tl) {
         atb += w * rhs * row;
         weight_sum += w;
       }
-      // Held towards a = 1, b = 0 in units of the outline's size.
+      // Held towards a = 1 and b = d = e = 0 in units of the outline's size.
       double radius = 0.0;
       for (const Point& p : current) radius += std::hypot(p.x - centre.x, p.y - centre.y);
       radius /= n;
       const double hold = 0.05 * weight_sum * radius * radius;
       ata(0, 0) += hold;
       ata(1, 1) += hold;
+      ata(2, 2) += hold;
+      ata(3, 3) += hold;
       atb[0] += hold;
       cv::Mat solution;
       if (!cv::solve(cv::Mat(ata), cv::Mat(atb), solution, cv::DECOMP_CHOLESKY)) return result;
       a = solution.at<double>(0);
       b = solution.at<double>(1);
-      tx = solution.at<double>(2);
-      ty = solution.at<double>(3);
+      d = solution.at<double>(2);
+      e = solution.at<double>(3);
+      tx = solution.at<double>(4);
+      ty = solution.at<double>(5);
     }
     for (Point& p : current) {
       const Point c = p - centre;
-      p = centre + Point(a * c.x - b * c.y + tx, b * c.x + a * c.y + ty);
+      p = centre + Point((a + d) * c.x + (e - b) * c.y + tx, (b + e) * c.x + (a - d) * c.y + ty);
     }
   }
   // Visible: points whose edge is where the fit put them.

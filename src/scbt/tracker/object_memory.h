@@ -4,7 +4,7 @@
 // refresh the edges and, when all of it is seen, move its shape a little towards theirs; a
 // boundary that departs from it along the object's own edges restarts it (a new view). Each frame
 // the remembered outline is fitted to the image (each point looks along its normal for an edge of
-// its own polarity; a similarity transform is fitted to the points that found one, robustly),
+// its own polarity; an affine map is fitted to the points that found one, robustly),
 // from its last place or, when that fails, from places around it (search()), which gives
 //  - where the object is even when part of it is hidden: the fitted outline, hidden part
 //    predicted from the visible one;

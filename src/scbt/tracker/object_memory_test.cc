@@ -87,7 +87,7 @@ TEST(ObjectMemory, PlacesAPartlyHiddenObjectAndSaysHowMuchIsVisible) {
 TEST(ObjectMemory, SearchFindsTheObjectBeyondOneFitsReach) {
   cv::RNG rng(7);
   const Polygon start = ellipse_outline({320, 240}, 60, 40);
-  for (const Point shift : {Point(40, 0), Point(-30, 25), Point(0, -45)}) {
+  for (const Point shift : {Point(52, 0), Point(-30, 25), Point(0, -45)}) {
     ObjectMemory memory;
     memory.remember(start, render(start, &rng), {0, 0});
     Polygon moved = start;
@@ -125,9 +125,9 @@ TEST(ObjectMemory, ExplainedByTheObjectsOwnEdgesNotByAnOccludersSide) {
   const Polygon start = ellipse_outline({320, 240}, 90, 60, 72);
   ObjectMemory memory;
   memory.remember(start, render(start, &rng), {0, 0});
-  Polygon turned = start;  // the right half up to 32 px wider: no affine map of the start fits it
+  Polygon turned = start;  // the right half up to 40 px wider: no affine map of the start fits it
   for (Point& p : turned) {
-    if (p.x > 320) p.x += 32.0 * (p.x - 320) / 90.0 * (1.0 - std::abs(p.y - 240) / 60.0);
+    if (p.x > 320) p.x += 40.0 * (p.x - 320) / 90.0 * (1.0 - std::abs(p.y - 240) / 60.0);
   }
   const cv::Mat turned_frame = render(turned, &rng);
   ObjectMemory seen = memory;
