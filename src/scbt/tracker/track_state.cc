@@ -136,11 +136,12 @@ bool LossMonitor::matches(const Polygon& cycle, const BoundaryEvidence& evidence
 
 TrackState LossMonitor::update(const Polygon& boundary, double confidence, bool held,
                                const BoundaryEvidence& evidence, const ShapeDescriptor* descriptor,
-                               bool refound) {
+                               bool refound, bool vouched) {
   const bool miss = held || confidence < options_.miss_confidence;
   // A boundary found after a cut of the view, or away from where it was searched for, is a
-  // re-find: it must keep the last confident shape and inside level, as one found while lost.
-  const bool must_match = after_cut_ || refound;
+  // re-find: it must keep the last confident shape and inside level, as one found while lost
+  // (unless the object memory vouches for it).
+  const bool must_match = (after_cut_ || refound) && !vouched;
   const bool confident = confidence >= options_.tracking_confidence &&
                          (!must_match || (evidence.shape_change <= options_.match_shape_distance &&
                                           keeps_level(evidence)));

@@ -87,9 +87,12 @@ class LossMonitor {
   // given, is shape_descriptor(boundary) (measure_evidence's): not computed again. `refound`:
   // the boundary was found away from where it was searched for (Tracker's motion recovery); it
   // is `tracking` only with the last confident shape and inside level, as after a cut.
+  // `vouched`: the object memory sees the boundary as the remembered object (along its fitted
+  // outline, most of it visible), which stands for that match: after an occluder has hidden the
+  // object for a while the last confident shape is stale, the memory is not.
   TrackState update(const Polygon& boundary, double confidence, bool held,
                     const BoundaryEvidence& evidence, const ShapeDescriptor* descriptor = nullptr,
-                    bool refound = false);
+                    bool refound = false, bool vouched = false);
   // The object found again while lost: tracking resumes from `boundary`.
   void resume(const Polygon& boundary, double inside_level) { reset(boundary, inside_level); }
   // Whether a cycle found while lost is the object: its shape and inside level match the last

@@ -434,10 +434,13 @@ TrackResult Tracker::Impl::track(const cv::Mat& frame) {
     check_view_cut(frame, result);
     motion_.update_held();
   }
+  // A cycle along the memory's fitted outline with most of the object seen is the remembered
+  // object, whatever the stale shape before an occluder says.
+  const bool vouched = verdict == MemoryVerdict::kAgrees && fit.visible >= kResumeVisible;
   // A found boundary's descriptor came with its evidence (assess): the monitor needs no other.
   result.state = monitor_.update(boundary_, result.confidence, result.held, result.evidence,
                                  result.held ? nullptr : &a->descriptor,
-                                 result.recovered || result.step == SearchStep::kSmaller);
+                                 result.recovered || result.step == SearchStep::kSmaller, vouched);
   if (result.state == TrackState::kTracking) {
     keyframes_.offer(frame, boundary_);
     if (options_.shape_weight > 0.0) shape_memory_.remember(boundary_);
