@@ -358,17 +358,19 @@ Tracker::Impl::MemoryVerdict Tracker::Impl::judge_by_memory(Attempt* a, const Me
   if (memory_.mismatch(a->boundary, fit.outline, near) <= kAgreeMismatch) {
     return MemoryVerdict::kAgrees;
   }
-  // The object's edges, all but a small part, are on the cycle: the view changed beyond what the
-  // memory's outline can follow.
-  if (memory_.explained_by(a->boundary, fit.outline, near, gray_, gray_roi_.tl()) >=
-      kNewViewExplained) {
+  // Departing along edges like the object's own: its shape changed, which the memory follows.
+  const bool own_departure =
+      memory_.departure_support(a->boundary, fit.outline, near, gray_, gray_roi_.tl()) >= 0.7;
+  // The object's edges, all but a small part, are on the cycle, and where it departs it runs
+  // along edges like the object's: the view changed beyond what the memory's outline can follow.
+  // (A cycle cutting across a small occluder also runs along most of the object's edges, but
+  // departs along the occluder's.)
+  if (own_departure && memory_.explained_by(a->boundary, fit.outline, near, gray_,
+                                            gray_roi_.tl()) >= kNewViewExplained) {
     return MemoryVerdict::kNewView;
   }
   if (fit.visible < kPredictVisible) return MemoryVerdict::kDeparts;
-  // Departing along edges like the object's own: its shape changed, which the memory follows.
-  return memory_.departure_support(a->boundary, fit.outline, near, gray_, gray_roi_.tl()) < 0.7
-             ? MemoryVerdict::kStandsIn
-             : MemoryVerdict::kDeparts;
+  return own_departure ? MemoryVerdict::kDeparts : MemoryVerdict::kStandsIn;
 }
 
 TrackResult Tracker::Impl::track(const cv::Mat& frame) {
