@@ -1,0 +1,115 @@
+// The object memory through occluders on rendered clips: the eval's seeded occluders (a bar, a
+// hand-like blob sweeping across, a textured disc that comes in and stays) drawn over a rim and a
+// box moving, turning and scaling over clutter. Scored as `scbt eval` scores the sequences: the
+// share of frames within 10 px of the whole true outline (the hidden part included) and whether
+// each event's boundary is back within 10 frames of the occluder leaving.
+#include <gtest/gtest.h>
+
+#include <iostream>
+#include <string>
+#include <vector>
+
+#include "scbt/eval/occlusion.h"
+#include "scbt/synthetic/scene.h"
+#include "scbt/tracker/tracker.h"
+
+namespace scbt {
+namespace {
+
+constexpr int kFrames = 170;
+constexpr double kNearPx = 10.0;  // a frame within this mean distance of the truth is a success
+constexpr int kBackWithin = 10;   // frames after an occluder leaves
+constexpr int kBackFor = 5;       // frames in a row within kNearPx that count as back
+
+struct OcclusionScore {
+  int frames = 0, near = 0;  // scored frames (all but the first) and those within kNearPx
+  int events = 0, back = 0;  // occlusion events and those back within kBackWithin frames
+};
+
+OcclusionScore& operator+=(OcclusionScore& a, const OcclusionScore& b) {
+  a.frames += b.frames;
+  a.near += b.near;
+  a.events += b.events;
+  a.back += b.back;
+  return a;
+}
+
+// One clip: `shape` on the smooth default path (seeded), the occluders of `spec` (seeded) drawn
+// over it, tracked from the first true outline with the object memory on or off.
+OcclusionScore track_occluded_clip(SceneShape shape, std::uint32_t seed, const std::string& spec,
+                                   bool object_memory) {
+  SceneOptions scene;
+  scene.seed = seed;
+  scene.shape = shape;
+  MotionOptions motion;
+  motion.period = 200 + 20 * static_cast<int>(seed);
+  std::vector<SceneFrame> clip = render_clip(scene, smooth_motion_path(motion, kFrames));
+  std::vector<Polygon> truth;
+  for (const SceneFrame& f : clip) truth.push_back(f.truth);
+  const OcclusionPlan plan(parse_occlusion_spec(spec), truth, seed);
+  for (int k = 0; k < kFrames; ++k) plan.draw(k, &clip[k].image);
+
+  TrackerOptions options;
+  options.object_memory = object_memory;
+  Tracker tracker(options);
+  tracker.init(clip[0].image, truth[0]);
+  std::vector<bool> near(kFrames, true);
+  OcclusionScore score;
+  for (int k = 1; k < kFrames; ++k) {
+    const TrackResult result = tracker.track(clip[k].image);
+    near[k] = mean_boundary_distance(result.boundary, truth[k]) <= kNearPx;
+    ++score.frames;
+    score.near += near[k] ? 1 : 0;
+  }
+  for (const OcclusionEvent& e : plan.events()) {
+    ++score.events;
+    for (int k = e.end(); k <= e.end() + kBackWithin && k + kBackFor <= kFrames; ++k) {
+      bool held = true;
+      for (int j = k; j < k + kBackFor; ++j) held = held && near[j];
+      if (held) {
+        ++score.back;
+        break;
+      }
+    }
+  }
+  return score;
+}
+
+OcclusionScore track_all(const std::string& spec, bool object_memory) {
+  OcclusionScore total;
+  for (SceneShape shape : {SceneShape::kRim, SceneShape::kBox}) {
+    for (std::uint32_t seed = 1; seed <= 3; ++seed) {
+      const OcclusionScore s = track_occluded_clip(shape, seed, spec, object_memory);
+      std::cout << spec << " " << to_string(shape) << " seed " << seed << ": " << s.near << "/"
+                << s.frames << " frames near, " << s.back << "/" << s.events << " events back\n";
+      total += s;
+    }
+  }
+  return total;
+}
+
+class OcclusionTest : public testing::TestWithParam<std::string> {};
+
+// Pooled over two shapes and three seeds (occluder places, directions, colours and the path).
+TEST_P(OcclusionTest, TheMemoryKeepsTheObjectAndComesBack) {
+  const OcclusionScore s = track_all(GetParam(), true);
+  ASSERT_GT(s.events, 0);
+  const double success = static_cast<double>(s.near) / s.frames;
+  std::cout << "pooled: " << success << " of frames near, " << s.back << "/" << s.events
+            << " events back\n";
+  EXPECT_GE(success, 0.85);
+  EXPECT_GE(s.back, s.events - 1);
+}
+
+INSTANTIATE_TEST_SUITE_P(Occluders, OcclusionTest,
+                         testing::Values("0.3,1.5,bar,sweep,solid", "0.4,1.5,hand,sweep,solid",
+                                         "0.3,1.5,disc,stay,textured"),
+                         [](const testing::TestParamInfo<std::string>& info) {
+                           const OcclusionSpec spec = parse_occlusion_spec(info.param);
+                           return spec.shape == OccluderShape::kBar    ? std::string("bar")
+                                  : spec.shape == OccluderShape::kHand ? std::string("hand")
+                                                                       : std::string("disc");
+                         });
+
+}  // namespace
+}  // namespace scbt
