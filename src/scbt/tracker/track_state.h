@@ -93,6 +93,13 @@ class LossMonitor {
   TrackState update(const Polygon& boundary, double confidence, bool held,
                     const BoundaryEvidence& evidence, const ShapeDescriptor* descriptor = nullptr,
                     bool refound = false, bool vouched = false);
+  // A frame on which the object memory placed the partly hidden object from the part of it seen
+  // (Tracker's step `memory`): the object is there, so it ends a run of misses or unsure frames;
+  // its boundary, partly predicted, does not become a confident one.
+  void note_partly_seen() {
+    misses_ = 0;
+    unsure_ = 0;
+  }
   // The object found again while lost: tracking resumes from `boundary`.
   void resume(const Polygon& boundary, double inside_level) { reset(boundary, inside_level); }
   // Whether a cycle found while lost is the object: its shape and inside level match the last

@@ -154,6 +154,21 @@ TEST(LossMonitor, AReFoundBoundaryTheMemoryVouchesForIsTracked) {
   EXPECT_EQ(vouched.last_confident(), square(5));
 }
 
+// Frames on which the memory placed the partly hidden object end a run of misses: three misses
+// with such frames between them are not three in a row; nothing is learnt from those frames.
+TEST(LossMonitor, PartlySeenFramesEndARunOfMisses) {
+  LossMonitor monitor;
+  monitor.reset(square(0), 100);
+  EXPECT_EQ(monitor.update(square(0), 0.0, true, {}), TrackState::kUncertain);
+  monitor.note_partly_seen();
+  EXPECT_EQ(monitor.update(square(0), 0.0, true, {}), TrackState::kUncertain);
+  monitor.note_partly_seen();
+  EXPECT_EQ(monitor.update(square(0), 0.0, true, {}), TrackState::kUncertain);
+  EXPECT_EQ(monitor.update(square(0), 0.0, true, {}), TrackState::kUncertain);
+  EXPECT_EQ(monitor.update(square(0), 0.0, true, {}), TrackState::kLost);
+  EXPECT_EQ(monitor.last_confident(), square(0));
+}
+
 TEST(LossMonitor, DisabledNeverLost) {
   LossOptions options;
   options.enabled = false;

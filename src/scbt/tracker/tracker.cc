@@ -391,8 +391,10 @@ TrackResult Tracker::Impl::track(const cv::Mat& frame) {
   const MemoryFit& fit = memory.fit;
   const MemoryVerdict verdict = memory.verdict;
   if (verdict == MemoryVerdict::kStandsIn) {
-    // The remembered outline where the visible part of the object puts it. The loss monitor is
-    // not told: the object is there, partly hidden; its state says how much is seen.
+    // The remembered outline where the visible part of the object puts it. The loss monitor
+    // learns nothing from it but that the object is there, partly hidden; the state says how much
+    // is seen.
+    monitor_.note_partly_seen();
     boundary_ = fit.outline;
     boundary_area_ = area(boundary_);
     result.from_memory = true;
