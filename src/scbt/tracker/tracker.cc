@@ -146,6 +146,7 @@ void Tracker::Impl::init(const cv::Mat& frame, const Polygon& polygon) {
   appearance_.remember(frame, boundary_);
   shape_memory_.restart(boundary_);
   memory_.clear();
+  memory_provisional_ = 0;
   if (options_.object_memory) memory_.restart(boundary_, reference_gray_, {0, 0});
   monitor_.reset(
       polygon, unstretched_level(exposure_stretch_,
@@ -320,6 +321,12 @@ Tracker::Impl::MemoryCheck Tracker::Impl::check_with_memory(const cv::Mat& frame
     if (found.valid) {
       check.fit = found;
       check.verdict = judge_by_memory(a, check.fit);
+    }
+  }
+  if (memory_provisional_ > 0) {
+    --memory_provisional_;
+    if (check.verdict == MemoryVerdict::kDeparts || check.verdict == MemoryVerdict::kStandsIn) {
+      check.verdict = MemoryVerdict::kNewView;
     }
   }
   return check;

@@ -272,6 +272,13 @@ class Tracker::Impl {
   // or kMemorySearchMax px away (ObjectMemory::search), in a window of the frame.
   MemoryFit search_memory(const cv::Mat& frame);
   static constexpr double kMemorySearchMax = 72.0;
+  // Frames after tracking resumed from a boundary found while lost during which the memory,
+  // restarted from that boundary, only follows the confident cycles (restarting from each that
+  // departs) and never stands in: a re-find a few pixels off (a look-alike beside the object)
+  // must not be held there; half a second of tracking confirms it. The user's initial boundary
+  // needs no such confirmation.
+  static constexpr int kProvisionalFrames = 15;
+  int memory_provisional_ = 0;
   bool keep_debug_ = false;
   TrackDebug debug_;
 };

@@ -76,7 +76,10 @@ void Tracker::Impl::resume_tracking_from(const cv::Mat& frame, Polygon boundary,
     appearance_.remember(frame, boundary_);
   }
   shape_memory_.restart(boundary_);
-  if (options_.object_memory) memory_.restart(boundary_, reference_gray_, reference_roi_.tl());
+  if (options_.object_memory) {
+    memory_.restart(boundary_, reference_gray_, reference_roi_.tl());
+    memory_provisional_ = kProvisionalFrames;
+  }
   result->boundary = boundary_;
 }
 
