@@ -32,10 +32,13 @@ namespace scbt {
 //   kMemory       the remembered outline fitted to the visible part of the object
 //                 (TrackerOptions::object_memory), when the step above found no cycle, or one that
 //                 departs from the fitted outline along part of it without the object's edges
-//                 there; taken when at least TrackerOptions::min_visible of it is seen.
+//                 there; taken when at least 35 % of it is seen (`tracking` from
+//                 TrackerOptions::min_visible on, `uncertain` below).
 // While the object is lost (TrackState::kLost):
 //   kInPlace      the tracking steps above, their boundary taken when it matches the last
 //                 confident one with the tracking bar (LossOptions::tracking_confidence).
+//   kMemory       the remembered outline fitted where the object was (object_memory), taken
+//                 when 85 % of it is seen again.
 //   kWholeFrame   the last confident outline placed over the whole frame (where it was last
 //                 matched and seen, where the scene keyframes put it, the best-scoring places, then
 //                 other sizes and views), every placement searched and the best match taken once
