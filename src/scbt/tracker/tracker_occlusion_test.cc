@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "scbt/eval/alignment_error.h"
 #include "scbt/eval/occlusion.h"
 #include "scbt/synthetic/scene.h"
 #include "scbt/tracker/tracker.h"
@@ -17,7 +18,7 @@ namespace scbt {
 namespace {
 
 constexpr int kFrames = 170;
-constexpr double kNearPx = 10.0;  // a frame within this mean distance of the truth is a success
+constexpr double kNearPx = 10.0;  // a frame with E_AL under this is a success (S@10)
 constexpr int kBackWithin = 10;   // frames after an occluder leaves
 constexpr int kBackFor = 5;       // frames in a row within kNearPx that count as back
 
@@ -57,7 +58,7 @@ OcclusionScore track_occluded_clip(SceneShape shape, std::uint32_t seed, const s
   OcclusionScore score;
   for (int k = 1; k < kFrames; ++k) {
     const TrackResult result = tracker.track(clip[k].image);
-    near[k] = mean_boundary_distance(result.boundary, truth[k]) <= kNearPx;
+    near[k] = alignment_error(result.boundary, truth[k], clip[k].image.size()) < kNearPx;
     ++score.frames;
     score.near += near[k] ? 1 : 0;
   }
