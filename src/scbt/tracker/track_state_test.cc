@@ -129,25 +129,23 @@ TEST(LossMonitor, ARefoundBoundaryMustKeepTheShape) {
 // its shape left the last confident one behind (an occluder hid the object while it changed), and
 // ends the streak that would have been lost; a low confidence stays what it is.
 TEST(LossMonitor, AReFoundBoundaryTheMemoryVouchesForIsTracked) {
-  LossMonitor monitor;
-  monitor.reset(square(0), 100);
-  monitor.note_view_cut();
   BoundaryEvidence changed = level(100);
   changed.shape_change = 0.1;
-  for (int k = 1; k <= 4; ++k) {
-    EXPECT_EQ(monitor.update(square(k), 0.95, false, changed, nullptr, true),
-              TrackState::kUncertain)
-        << k;
-  }
-  EXPECT_EQ(monitor.update(square(5), 0.3, false, changed, nullptr, true, true), TrackState::kLost);
-  LossMonitor vouched;
-  vouched.reset(square(0), 100);
-  vouched.note_view_cut();
-  for (int k = 1; k <= 4; ++k) {
-    EXPECT_EQ(vouched.update(square(k), 0.95, false, changed, nullptr, true),
-              TrackState::kUncertain)
-        << k;
-  }
+  // After a cut, four re-finds of a changed shape: one more frame not `tracking` is lost.
+  const auto four_unmatched = [&changed]() {
+    LossMonitor monitor;
+    monitor.reset(square(0), 100);
+    monitor.note_view_cut();
+    for (int k = 1; k <= 4; ++k) {
+      EXPECT_EQ(monitor.update(square(k), 0.95, false, changed, nullptr, true),
+                TrackState::kUncertain)
+          << k;
+    }
+    return monitor;
+  };
+  LossMonitor low = four_unmatched();
+  EXPECT_EQ(low.update(square(5), 0.3, false, changed, nullptr, true, true), TrackState::kLost);
+  LossMonitor vouched = four_unmatched();
   EXPECT_EQ(vouched.update(square(5), 0.95, false, changed, nullptr, true, true),
             TrackState::kTracking);
   EXPECT_FALSE(vouched.after_cut());
