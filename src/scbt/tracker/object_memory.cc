@@ -67,6 +67,10 @@ Point closest_point_on(const Polygon& polygon, const Point& p) {
 
 }  // namespace
 
+double agreement_distance(const Polygon& outline) {
+  return std::max(3.0, 0.05 * std::sqrt(std::max(1.0, area(outline))));
+}
+
 Polygon resample_outline(const Polygon& polygon, int n) {
   Polygon out;
   const double total = perimeter(polygon);
@@ -124,19 +128,28 @@ void ObjectMemory::remember(const Polygon& boundary, const cv::Mat& gray, cv::Po
   // The anchor's outline mapped onto `boundary` by an affine map (closest points, a few rounds
   // from where it is placed): the memory takes the boundary's place and view; its shape changes
   // only by `shape_rate`, so that a cycle eaten into by an occluder a little each frame cannot wear
-  // the outline away.
+  // the outline away. Points farther from the boundary than twice the agreement distance weigh
+  // nothing (Tukey's biweight): where a cycle that agrees overall cuts across an occluder, its
+  // cut must not drag the outline with it.
   const size_t n = anchor_model_.size();
+  const double cutoff = 2.0 * agreement_distance(boundary);
   Polygon mapped = placed_;
   for (int round = 0; round < 4; ++round) {
     cv::Matx33d ata = cv::Matx33d::zeros();
     cv::Vec3d atx(0, 0, 0), aty(0, 0, 0);
+    double weight_sum = 0.0;
     for (size_t i = 0; i < n; ++i) {
       const Point target = closest_point_on(boundary, mapped[i]);
+      const double u = std::hypot(target.x - mapped[i].x, target.y - mapped[i].y) / cutoff;
+      const double w = u < 1.0 ? (1 - u * u) * (1 - u * u) : 0.0;
       const cv::Vec3d row(anchor_model_[i].x, anchor_model_[i].y, 1.0);
-      ata += row * row.t();
-      atx += target.x * row;
-      aty += target.y * row;
+      ata += w * row * row.t();
+      atx += w * target.x * row;
+      aty += w * target.y * row;
+      weight_sum += w;
     }
+    // Too little of the outline on the boundary to place it: the place reached stays.
+    if (weight_sum < 0.5 * static_cast<double>(n)) break;
     cv::Mat ax, ay;
     if (!cv::solve(cv::Mat(ata), cv::Mat(atx), ax, cv::DECOMP_CHOLESKY) ||
         !cv::solve(cv::Mat(ata), cv::Mat(aty), ay, cv::DECOMP_CHOLESKY)) {

@@ -104,6 +104,10 @@ class ObjectMemory {
   Polygon placed_;        // the outline where it was last learnt or fitted
 };
 
+// How near a boundary must run to an outline to agree with it there: a twentieth of the
+// outline's size, at least 3 px.
+double agreement_distance(const Polygon& outline);
+
 // `polygon` resampled to `n` points evenly spaced along its length, from its first vertex.
 Polygon resample_outline(const Polygon& polygon, int n);
 

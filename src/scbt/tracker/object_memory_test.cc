@@ -180,5 +180,25 @@ TEST(ObjectMemory, MismatchCountsTheDepartingPart) {
   EXPECT_GT(memory.mismatch(a, leaked, 3.0), 0.25);
 }
 
+// A boundary that follows the object but for a part an occluder cuts off (along the occluder's
+// side): the memory takes the place of the part that follows the object, and its outline is not
+// dragged towards the cut.
+TEST(ObjectMemory, LearnsThePlaceFromTheBoundaryNotFromWhereItCutsAcrossAnOccluder) {
+  cv::RNG rng(9);
+  const Polygon start = ellipse_outline({320, 240}, 90, 60, 64);
+  for (const double cut_x : {45.0, 55.0, 65.0}) {
+    ObjectMemory memory;
+    memory.remember(start, render(start, &rng), {0, 0});
+    Polygon moved = start;
+    for (Point& p : moved) p += Point(3, 2);
+    Polygon cut = moved;  // the right end cut off along the occluder's side x = cut_x
+    for (Point& p : cut) p.x = std::min(p.x, 323.0 + cut_x);
+    cv::Mat frame = render(moved, &rng);
+    cv::rectangle(frame, cv::Rect(cvRound(323 + cut_x), 0, 120, 480), cv::Scalar(120), cv::FILLED);
+    memory.remember(cut, frame, {0, 0});
+    EXPECT_LT(mean_distance(memory.placed(), moved), 2.0) << cut_x;
+  }
+}
+
 }  // namespace
 }  // namespace scbt

@@ -294,12 +294,6 @@ void Tracker::Impl::report_attempt(const Attempt& a, TrackResult* result) {
   }
 }
 
-// How near a cycle must run to the memory's fitted outline to follow it: a few pixels, or a
-// twentieth of the object's size.
-static double near_outline(const Polygon& fitted) {
-  return std::max(3.0, 0.05 * std::sqrt(std::max(1.0, area(fitted))));
-}
-
 MemoryFit Tracker::Impl::search_memory(const cv::Mat& frame) {
   const double radius = std::min(kMemorySearchMax, 0.5 * std::sqrt(area(memory_.placed())));
   const cv::Rect roi =
@@ -361,7 +355,7 @@ Tracker::Impl::MemoryVerdict Tracker::Impl::judge_by_memory(Attempt* a, const Me
   if (!a->assessed) assess(a, boundary_);
   // A cycle along the fitted outline (within a few pixels, or a twentieth of the object's size)
   // but for a small part is the object: kept as found, to the pixel.
-  const double near = near_outline(fit.outline);
+  const double near = agreement_distance(fit.outline);
   if (memory_.mismatch(a->boundary, fit.outline, near) <= kAgreeMismatch) {
     return MemoryVerdict::kAgrees;
   }
