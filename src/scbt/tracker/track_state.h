@@ -88,7 +88,7 @@ class LossMonitor {
   // the boundary was found away from where it was searched for (Tracker's motion recovery); it
   // is `tracking` only with the last confident shape and inside level, as after a cut.
   // `vouched`: the object memory sees the boundary as the remembered object (along its fitted
-  // outline, most of it visible), which stands for that match: after an occluder has hidden the
+  // outline, enough of it visible), which stands for that match: after an occluder has hidden the
   // object for a while the last confident shape is stale, the memory is not.
   TrackState update(const Polygon& boundary, double confidence, bool held,
                     const BoundaryEvidence& evidence, const ShapeDescriptor* descriptor = nullptr,

@@ -439,9 +439,9 @@ TrackResult Tracker::Impl::track(const cv::Mat& frame) {
     check_view_cut(frame, result);
     motion_.update_held();
   }
-  // A cycle along the memory's fitted outline with most of the object seen is the remembered
-  // object, whatever the stale shape before an occluder says.
-  const bool vouched = verdict == MemoryVerdict::kAgrees && fit.visible >= kResumeVisible;
+  // A cycle along the memory's fitted outline, with as much of the object seen as a stand-in is
+  // `tracking` with, is the remembered object, whatever the stale shape before an occluder says.
+  const bool vouched = verdict == MemoryVerdict::kAgrees && fit.visible >= options_.min_visible;
   // A found boundary's descriptor came with its evidence (assess): the monitor needs no other.
   result.state = monitor_.update(boundary_, result.confidence, result.held, result.evidence,
                                  result.held ? nullptr : &a->descriptor,
