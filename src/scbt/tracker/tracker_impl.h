@@ -232,9 +232,11 @@ class Tracker::Impl {
   ShapeMemory shape_memory_;  // the shape the choice weighs candidates against
   ObjectMemory memory_;       // the object's outline and edges (TrackerOptions::object_memory)
   cv::Mat memory_gray_;       // the window the memory is fitted to while lost
-  // While lost: the memory fitted where the object was last placed; tracking resumes from it when
-  // at least kResumeVisible of its outline is seen (*result filled).
-  bool resume_from_memory(const cv::Mat& frame, TrackResult* result);
+  // While lost: the memory fitted where the object was last placed. Tracking resumes from it when
+  // TrackerOptions::min_visible of its outline is seen (kResumed, *result filled); with
+  // kPredictVisible seen the object is there, partly hidden (kPartlySeen).
+  enum class MemoryResume { kNotSeen, kPartlySeen, kResumed };
+  MemoryResume resume_from_memory(const cv::Mat& frame, TrackResult* result);
   static constexpr double kResumeVisible = 0.85;
   // A cycle along the fitted outline but for at most this fraction of it agrees with the memory.
   static constexpr double kAgreeMismatch = 0.15;

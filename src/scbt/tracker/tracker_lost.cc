@@ -66,7 +66,21 @@ TrackResult Tracker::Impl::track_lost(const cv::Mat& frame) {
   // kInPlace. After a cut of the view, where the object was says nothing: only the whole frame.
   if (!monitor_.after_cut() && resume_in_place(frame, &result)) return result;
   // kMemory: the remembered outline found where it was, its edges seen again (an occluder left).
-  if (!monitor_.after_cut() && resume_from_memory(frame, &result)) return result;
+  // Also after a cut: an occluder over the object changes the view as much as a cut does, and the
+  // remembered edges seen where the object was are the object, not a look-alike.
+  const MemoryResume memory = resume_from_memory(frame, &result);
+  if (memory == MemoryResume::kResumed) return result;
+  if (memory == MemoryResume::kPartlySeen) {
+    // The object is where it was, partly hidden: no whole-frame search for a look-alike.
+    result = TrackResult();
+    result.state = TrackState::kLost;
+    result.held = true;
+    result.visible = 0.0;
+    result.boundary = lost_output_;
+    pending_.clear();
+    pending_matches_ = 0;
+    return result;
+  }
   // kWholeFrame: the last confident outline placed over the frame, every placement searched.
   const double in_place_line_ms = result.line_ms, in_place_grouping_ms = result.grouping_ms;
   result = TrackResult();

@@ -34,21 +34,24 @@ bool Tracker::Impl::resume_in_place(const cv::Mat& frame, TrackResult* result) {
   return true;
 }
 
-bool Tracker::Impl::resume_from_memory(const cv::Mat& frame, TrackResult* result) {
-  if (!options_.object_memory || !memory_.ready()) return false;
+Tracker::Impl::MemoryResume Tracker::Impl::resume_from_memory(const cv::Mat& frame,
+                                                              TrackResult* result) {
+  if (!options_.object_memory || !memory_.ready()) return MemoryResume::kNotSeen;
   const cv::Rect roi = detection_roi(
       memory_.placed(), options_.filter_distance + options_.detector.roi_padding, frame_size_);
-  if (roi.empty()) return false;
+  if (roi.empty()) return MemoryResume::kNotSeen;
   to_exposed_gray(frame(roi), &memory_gray_);
   const MemoryFit fit = memory_.fit(memory_gray_, roi.tl());
-  // Nearly all of the object seen where it was remembered: it, not a look-alike elsewhere.
-  if (!fit.valid || fit.visible < kResumeVisible) return false;
+  if (!fit.valid || fit.visible < kPredictVisible) return MemoryResume::kNotSeen;
+  // The remembered edges seen where the object was, as much as a stand-in is `tracking` with:
+  // the object, not a look-alike elsewhere. With less, it is still there, partly hidden.
+  if (fit.visible < options_.min_visible) return MemoryResume::kPartlySeen;
   result->visible = fit.visible;
   result->confidence = fit.visible;
   result->from_memory = true;
   result->step = SearchStep::kMemory;
   resume_tracking_from(frame, fit.outline, result);
-  return true;
+  return MemoryResume::kResumed;
 }
 
 void Tracker::Impl::resume_tracking_from(const cv::Mat& frame, Polygon boundary,
