@@ -237,6 +237,8 @@ class Tracker::Impl {
   // kPredictVisible seen the object is there, partly hidden (kPartlySeen).
   enum class MemoryResume { kNotSeen, kPartlySeen, kResumed };
   MemoryResume resume_from_memory(const cv::Mat& frame, TrackResult* result);
+  // Below this much of the outline seen (and no agreeing cycle) the memory is looked for around
+  // its last place; a fit found there must see as much to move it.
   static constexpr double kResumeVisible = 0.85;
   // A cycle along the fitted outline but for at most this fraction of it agrees with the memory.
   static constexpr double kAgreeMismatch = 0.15;
