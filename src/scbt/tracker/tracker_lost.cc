@@ -70,45 +70,41 @@ TrackResult Tracker::Impl::track_lost(const cv::Mat& frame) {
   // remembered edges seen where the object was are the object, not a look-alike.
   const MemoryResume memory = resume_from_memory(frame, &result);
   if (memory == MemoryResume::kResumed) return result;
-  if (memory == MemoryResume::kPartlySeen) {
-    // The object is where it was, partly hidden: no whole-frame search for a look-alike.
-    result = TrackResult();
-    result.state = TrackState::kLost;
-    result.held = true;
-    result.visible = 0.0;
-    result.boundary = lost_output_;
-    pending_.clear();
-    pending_matches_ = 0;
-    return result;
-  }
-  // kWholeFrame: the last confident outline placed over the frame, every placement searched.
+  // Still lost this frame unless the whole frame gives a match; the in-place search's time counts.
   const double in_place_line_ms = result.line_ms, in_place_grouping_ms = result.grouping_ms;
   result = TrackResult();
   result.state = TrackState::kLost;
   result.held = true;
   result.visible = 0.0;
-  const Clock::time_point line_start = Clock::now();
-  to_exposed_gray(frame, &search_gray_);
-  const std::vector<Segment> segments =
-      detector_->detect_in(search_gray_, cv::Point(0, 0), frame_size_);
-  result.line_ms = in_place_line_ms + elapsed_ms(line_start);
-
-  const Clock::time_point rank_start = Clock::now();
-  std::vector<Placement> placements;
-  const size_t beyond_count = place_over_frame(segments, &placements);
-  result.stages.recovery_ms = elapsed_ms(rank_start);
-  result.grouping_ms = in_place_grouping_ms + result.stages.recovery_ms;
-
-  Polygon match = best_match(frame, placements, beyond_count, &result);
-  result.num_detected = static_cast<int>(segments.size());
-  if (keep_debug_) debug_.detected = segments;
-  if (match.empty()) {
+  result.line_ms = in_place_line_ms;
+  result.grouping_ms = in_place_grouping_ms;
+  // No match: the last confident boundary stays the output, nothing pending.
+  const auto no_match = [this, &result]() {
     pending_.clear();
     pending_matches_ = 0;
     result.confidence = 0.0;
     result.boundary = lost_output_;
     return result;
-  }
+  };
+  // The object is where it was, partly hidden: no whole-frame search for a look-alike.
+  if (memory == MemoryResume::kPartlySeen) return no_match();
+  // kWholeFrame: the last confident outline placed over the frame, every placement searched.
+  const Clock::time_point line_start = Clock::now();
+  to_exposed_gray(frame, &search_gray_);
+  const std::vector<Segment> segments =
+      detector_->detect_in(search_gray_, cv::Point(0, 0), frame_size_);
+  result.line_ms += elapsed_ms(line_start);
+
+  const Clock::time_point rank_start = Clock::now();
+  std::vector<Placement> placements;
+  const size_t beyond_count = place_over_frame(segments, &placements);
+  result.stages.recovery_ms = elapsed_ms(rank_start);
+  result.grouping_ms += result.stages.recovery_ms;
+
+  Polygon match = best_match(frame, placements, beyond_count, &result);
+  result.num_detected = static_cast<int>(segments.size());
+  if (keep_debug_) debug_.detected = segments;
+  if (match.empty()) return no_match();
   const bool same_place = !pending_.empty() && cv::norm(centroid(match) - centroid(pending_)) <=
                                                    0.25 * std::sqrt(area(match));
   pending_matches_ = same_place ? pending_matches_ + 1 : 1;
