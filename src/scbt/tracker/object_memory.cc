@@ -9,6 +9,9 @@ namespace {
 
 // How far inside and outside the outline its side levels are read (px): past the edge's blur.
 constexpr double kSideOffset = 3.0;
+// The most a fit may stretch the outline along one direction relative to another since it was
+// learnt.
+constexpr double kMaxStretch = 2.0;
 
 // Outward unit normals of a closed outline.
 std::vector<Point> outward_normals(const Polygon& outline) {
@@ -65,6 +68,27 @@ Point closest_point_on(const Polygon& polygon, const Point& p) {
   return best;
 }
 
+// The linear part of the affine map taking `from` onto `to` (corresponding points, least
+// squares about their centroids); the identity when it cannot be told.
+cv::Matx22d linear_map(const Polygon& from, const Polygon& to) {
+  if (from.size() != to.size() || from.size() < 3) return cv::Matx22d::eye();
+  Point cf(0, 0), ct(0, 0);
+  for (size_t i = 0; i < from.size(); ++i) {
+    cf += from[i];
+    ct += to[i];
+  }
+  cf *= 1.0 / from.size();
+  ct *= 1.0 / to.size();
+  cv::Matx22d ff = cv::Matx22d::zeros(), tf = cv::Matx22d::zeros();
+  for (size_t i = 0; i < from.size(); ++i) {
+    const cv::Vec2d f(from[i].x - cf.x, from[i].y - cf.y), t(to[i].x - ct.x, to[i].y - ct.y);
+    ff += f * f.t();
+    tf += t * f.t();
+  }
+  if (std::abs(cv::determinant(ff)) < 1e-9) return cv::Matx22d::eye();
+  return tf * ff.inv();
+}
+
 }  // namespace
 
 double agreement_distance(const Polygon& outline) {
@@ -98,6 +122,7 @@ Polygon resample_outline(const Polygon& polygon, int n) {
 void ObjectMemory::clear() {
   anchor_model_.clear();
   placed_.clear();
+  learnt_.clear();
   polarity_.clear();
   contrast_.clear();
   inside_.clear();
@@ -112,6 +137,7 @@ void ObjectMemory::restart(const Polygon& boundary, const cv::Mat& gray, cv::Poi
     return;
   }
   placed_ = anchor_model_;
+  learnt_ = placed_;
   polarity_.assign(placed_.size(), 0.0);
   contrast_.assign(placed_.size(), 0.0);
   inside_.assign(placed_.size(), -1.0);
@@ -169,6 +195,7 @@ void ObjectMemory::remember(const Polygon& boundary, const cv::Mat& gray, cv::Po
     anchor_model_ = mapped;
   }
   placed_ = mapped;
+  learnt_ = placed_;
   read_edges(gray, tl);
 }
 
@@ -328,6 +355,15 @@ MemoryFit ObjectMemory::fit(const cv::Mat& gray, cv::Point tl) {
       p = centre + Point((a + d) * c.x + (e - b) * c.y + tx, (b + e) * c.x + (a - d) * c.y + ty);
     }
   }
+  // Seen from another angle an outline flattens or rounds (a rim by up to the 1.5 the view-change
+  // search allows). A fit stretched twice as much along one direction as along another since a
+  // boundary was last learnt, or squeezed to half along one, has pulled the outline onto edges
+  // inside its visible part (a rim's inner edge, a liquid's surface) and says nothing. Growing
+  // alike in every direction (a camera coming closer) is not limited.
+  cv::Matx22d u, vt;
+  cv::Matx21d stretch;
+  cv::SVD::compute(linear_map(learnt_, current), stretch, u, vt);
+  if (!(stretch(0) <= kMaxStretch * stretch(1) && stretch(1) >= 1.0 / kMaxStretch)) return result;
   // Visible: points whose edge is where the fit put them.
   const std::vector<Point> normals = outward_normals(current);
   search(options_.inlier_px, normals);

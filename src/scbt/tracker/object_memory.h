@@ -102,6 +102,7 @@ class ObjectMemory {
   std::vector<double> outside_;
   Polygon anchor_model_;  // the outline restart() was given (resampled), or the shape learnt since
   Polygon placed_;        // the outline where it was last learnt or fitted
+  Polygon learnt_;        // the outline where a boundary was last learnt (restart, remember)
 };
 
 // How near a boundary must run to an outline to agree with it there: a twentieth of the

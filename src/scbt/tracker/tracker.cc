@@ -147,6 +147,7 @@ void Tracker::Impl::init(const cv::Mat& frame, const Polygon& polygon) {
   shape_memory_.restart(boundary_);
   memory_.clear();
   memory_provisional_ = 0;
+  new_view_frames_ = 0;
   if (options_.object_memory) memory_.restart(boundary_, reference_gray_, {0, 0});
   monitor_.reset(
       polygon, unstretched_level(exposure_stretch_,
@@ -294,13 +295,13 @@ void Tracker::Impl::report_attempt(const Attempt& a, TrackResult* result) {
   }
 }
 
-MemoryFit Tracker::Impl::search_memory(const cv::Mat& frame) {
+MemoryFit Tracker::Impl::search_memory(const cv::Mat& frame, double accept_visible) {
   const double radius = std::min(kMemorySearchMax, 0.5 * std::sqrt(area(memory_.placed())));
   const cv::Rect roi =
       detection_roi(memory_.placed(), radius + options_.memory.search_px, frame_size_);
   if (roi.empty()) return {};
   to_exposed_gray(frame(roi), &memory_gray_);
-  return memory_.search(memory_gray_, roi.tl(), radius, kResumeVisible);
+  return memory_.search(memory_gray_, roi.tl(), radius, accept_visible);
 }
 
 Tracker::Impl::MemoryCheck Tracker::Impl::check_with_memory(const cv::Mat& frame, Attempt* a) {
@@ -311,11 +312,18 @@ Tracker::Impl::MemoryCheck Tracker::Impl::check_with_memory(const cv::Mat& frame
       (!check.fit.valid || check.fit.visible < kResumeVisible)) {
     // Neither the cycle nor the memory where it was placed sees the object well: the memory is
     // looked for around (it may have slipped while the object was hidden).
-    const MemoryFit found = search_memory(frame);  // valid only when it sees kResumeVisible
+    const MemoryFit found = search_memory(frame, kResumeVisible);
     if (found.valid) {
       check.fit = found;
       check.verdict = judge_by_memory(a, check.fit);
     }
+  }
+  // A new view stays; an occluder passing in front changes the cycle's cut frame by frame (a
+  // hand's fingers over a rim pass as the object's own edges in grey): the memory takes a new
+  // view only after kNewViewFrames frames in a row show one, and meanwhile follows no cycle.
+  new_view_frames_ = check.verdict == MemoryVerdict::kNewView ? new_view_frames_ + 1 : 0;
+  if (check.verdict == MemoryVerdict::kNewView && new_view_frames_ < kNewViewFrames) {
+    check.verdict = MemoryVerdict::kDeparts;
   }
   if (memory_provisional_ > 0) {
     --memory_provisional_;

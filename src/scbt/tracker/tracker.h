@@ -37,9 +37,10 @@ namespace scbt {
 // While the object is lost (TrackState::kLost):
 //   kInPlace      the tracking steps above, their boundary taken when it matches the last
 //                 confident one with the tracking bar (LossOptions::tracking_confidence).
-//   kMemory       the remembered outline fitted where the object was (object_memory), also
-//                 after a cut, taken when TrackerOptions::min_visible of it is seen again; with
-//                 35 % seen the object is there, partly hidden, and kWholeFrame is not tried.
+//   kMemory       the remembered outline looked for where the object was and around it
+//                 (object_memory), also after a cut, taken when TrackerOptions::min_visible of it
+//                 is seen again; with 35 % seen the object is there, partly hidden: the fitted
+//                 outline is the output (`uncertain`) and kWholeFrame is not tried.
 //   kWholeFrame   the last confident outline placed over the whole frame (where it was last
 //                 matched and seen, where the scene keyframes put it, the best-scoring places, then
 //                 other sizes and views), every placement searched and the best match taken once

@@ -232,11 +232,13 @@ class Tracker::Impl {
   ShapeMemory shape_memory_;  // the shape the choice weighs candidates against
   ObjectMemory memory_;       // the object's outline and edges (TrackerOptions::object_memory)
   cv::Mat memory_gray_;       // the window the memory is fitted to while lost
-  // While lost: the memory fitted where the object was last placed. Tracking resumes from it when
-  // TrackerOptions::min_visible of its outline is seen (kResumed, *result filled); with
-  // kPredictVisible seen the object is there, partly hidden (kPartlySeen).
+  // While lost: the memory looked for where the object was last placed and around it
+  // (search_memory). Tracking resumes from it when TrackerOptions::min_visible of its outline is
+  // seen (kResumed, *result filled); with kPredictVisible seen the object is there, partly hidden
+  // (kPartlySeen).
   enum class MemoryResume { kNotSeen, kPartlySeen, kResumed };
-  MemoryResume resume_from_memory(const cv::Mat& frame, TrackResult* result);
+  // *seen: the fit (valid when the object is at least partly seen).
+  MemoryResume resume_from_memory(const cv::Mat& frame, TrackResult* result, MemoryFit* seen);
   // Below this much of the outline seen (and no agreeing cycle) the memory is looked for around
   // its last place; a fit found there must see as much to move it.
   static constexpr double kResumeVisible = 0.85;
@@ -247,6 +249,10 @@ class Tracker::Impl {
   // A cycle that departs from the fitted outline yet runs along this fraction of the memory's
   // own edges is the object seen from a new view (the memory is stale, not the cycle wrong).
   static constexpr double kNewViewExplained = 0.85;
+  // Frames in a row a new view must be seen in before the memory restarts on it (a sixth of a
+  // second at 30 frames a second), and the count so far.
+  static constexpr int kNewViewFrames = 5;
+  int new_view_frames_ = 0;
   // A confident cycle along the fitted outline with this much of it visible gives the memory its
   // shape (with less, part may be hidden and cut off by the cycle: only its place and view).
   static constexpr double kReshapeVisible = 0.9;
@@ -274,7 +280,8 @@ class Tracker::Impl {
   void learn_from_cycle(const MemoryCheck& check, cv::Point tl);
   // The memory fitted from places around where it was last placed, up to half the object's size
   // or kMemorySearchMax px away (ObjectMemory::search), in a window of the frame.
-  MemoryFit search_memory(const cv::Mat& frame);
+  // The fit returned is valid only when it sees `accept_visible` of the outline.
+  MemoryFit search_memory(const cv::Mat& frame, double accept_visible);
   static constexpr double kMemorySearchMax = 72.0;
   // Frames after tracking resumed from a boundary found while lost during which the memory,
   // restarted from that boundary, only follows the confident cycles (restarting from each that

@@ -68,7 +68,8 @@ TrackResult Tracker::Impl::track_lost(const cv::Mat& frame) {
   // kMemory: the remembered outline found where it was, its edges seen again (an occluder left).
   // Also after a cut: an occluder over the object changes the view as much as a cut does, and the
   // remembered edges seen where the object was are the object, not a look-alike.
-  const MemoryResume memory = resume_from_memory(frame, &result);
+  MemoryFit seen;
+  const MemoryResume memory = resume_from_memory(frame, &result, &seen);
   if (memory == MemoryResume::kResumed) return result;
   // Still lost this frame unless the whole frame gives a match; the in-place search's time counts.
   const double in_place_line_ms = result.line_ms, in_place_grouping_ms = result.grouping_ms;
@@ -87,7 +88,19 @@ TrackResult Tracker::Impl::track_lost(const cv::Mat& frame) {
     return result;
   };
   // The object is where it was, partly hidden: no whole-frame search for a look-alike.
-  if (memory == MemoryResume::kPartlySeen) return no_match();
+  if (memory == MemoryResume::kPartlySeen) {
+    // Where the visible part puts it is the best guess of where it is: `uncertain`, as a
+    // stand-in with as little seen is while tracking.
+    no_match();
+    result.boundary = seen.outline;
+    result.state = TrackState::kUncertain;
+    result.held = false;
+    result.visible = seen.visible;
+    result.confidence = seen.visible;
+    result.from_memory = true;
+    result.step = SearchStep::kMemory;
+    return result;
+  }
   // kWholeFrame: the last confident outline placed over the frame, every placement searched.
   const Clock::time_point line_start = Clock::now();
   to_exposed_gray(frame, &search_gray_);

@@ -35,22 +35,20 @@ bool Tracker::Impl::resume_in_place(const cv::Mat& frame, TrackResult* result) {
 }
 
 Tracker::Impl::MemoryResume Tracker::Impl::resume_from_memory(const cv::Mat& frame,
-                                                              TrackResult* result) {
+                                                              TrackResult* result,
+                                                              MemoryFit* seen) {
   if (!options_.object_memory || !memory_.ready()) return MemoryResume::kNotSeen;
-  const cv::Rect roi = detection_roi(
-      memory_.placed(), options_.filter_distance + options_.detector.roi_padding, frame_size_);
-  if (roi.empty()) return MemoryResume::kNotSeen;
-  to_exposed_gray(frame(roi), &memory_gray_);
-  const MemoryFit fit = memory_.fit(memory_gray_, roi.tl());
-  if (!fit.valid || fit.visible < kPredictVisible) return MemoryResume::kNotSeen;
+  // Looked for around where it was: the object may have moved while it was lost.
+  *seen = search_memory(frame, kPredictVisible);
+  if (!seen->valid) return MemoryResume::kNotSeen;
   // The remembered edges seen where the object was, as much as a stand-in is `tracking` with:
-  // the object, not a look-alike elsewhere. With less, it is still there, partly hidden.
-  if (fit.visible < options_.min_visible) return MemoryResume::kPartlySeen;
-  result->visible = fit.visible;
-  result->confidence = fit.visible;
+  // the object, not a look-alike elsewhere. With less, it is there, partly hidden.
+  if (seen->visible < options_.min_visible) return MemoryResume::kPartlySeen;
+  result->visible = seen->visible;
+  result->confidence = seen->visible;
   result->from_memory = true;
   result->step = SearchStep::kMemory;
-  resume_tracking_from(frame, fit.outline, result);
+  resume_tracking_from(frame, seen->outline, result);
   return MemoryResume::kResumed;
 }
 
@@ -79,7 +77,9 @@ void Tracker::Impl::resume_tracking_from(const cv::Mat& frame, Polygon boundary,
     appearance_.remember(frame, boundary_);
   }
   shape_memory_.restart(boundary_);
-  if (options_.object_memory) {
+  // Found by the memory itself: it keeps what it knows (the object's edges where it is still
+  // hidden included), placed where it was found.
+  if (options_.object_memory && !result->from_memory) {
     memory_.restart(boundary_, reference_gray_, reference_roi_.tl());
     memory_provisional_ = kProvisionalFrames;
   }
