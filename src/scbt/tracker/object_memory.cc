@@ -151,22 +151,37 @@ void ObjectMemory::remember(const Polygon& boundary, const cv::Mat& gray, cv::Po
     restart(boundary, gray, tl);
     return;
   }
-  // The anchor's outline mapped onto `boundary` by an affine map (closest points, a few rounds
-  // from where it is placed): the memory takes the boundary's place and view; its shape changes
-  // only by `shape_rate`, so that a cycle eaten into by an occluder a little each frame cannot wear
-  // the outline away. Points farther from the boundary than twice the agreement distance weigh
-  // nothing (Tukey's biweight): where a cycle that agrees overall cuts across an occluder, its
-  // cut must not drag the outline with it.
+  // The memory takes the boundary's place and view; its shape changes only by `shape_rate`, so
+  // that a cycle eaten into by an occluder a little each frame cannot wear the outline away.
+  const size_t n = anchor_model_.size();
+  Polygon mapped = placed_;
+  if (!map_anchor_onto(boundary, &mapped)) return;
+  if (shape_rate > 0.0) {
+    for (Point& p : mapped) p += (closest_point_on(boundary, p) - p) * shape_rate;
+    // Evenly spaced again (closest points bunch at corners); the anchor is the new shape.
+    mapped = resample_outline(mapped, static_cast<int>(n));
+    if (mapped.size() != n) return;
+    anchor_model_ = mapped;
+  }
+  placed_ = mapped;
+  learnt_ = placed_;
+  read_edges(gray, tl);
+}
+
+bool ObjectMemory::map_anchor_onto(const Polygon& boundary, Polygon* mapped) const {
+  // An affine map of the anchor fitted to the closest points of `boundary`, a few rounds from
+  // *mapped. Points farther from the boundary than twice the agreement distance weigh nothing
+  // (Tukey's biweight): where a cycle that agrees overall cuts across an occluder, its cut must
+  // not drag the outline with it.
   const size_t n = anchor_model_.size();
   const double cutoff = 2.0 * agreement_distance(boundary);
-  Polygon mapped = placed_;
   for (int round = 0; round < 4; ++round) {
     cv::Matx33d ata = cv::Matx33d::zeros();
     cv::Vec3d atx(0, 0, 0), aty(0, 0, 0);
     double weight_sum = 0.0;
     for (size_t i = 0; i < n; ++i) {
-      const Point target = closest_point_on(boundary, mapped[i]);
-      const double u = std::hypot(target.x - mapped[i].x, target.y - mapped[i].y) / cutoff;
+      const Point target = closest_point_on(boundary, (*mapped)[i]);
+      const double u = std::hypot(target.x - (*mapped)[i].x, target.y - (*mapped)[i].y) / cutoff;
       const double w = u < 1.0 ? (1 - u * u) * (1 - u * u) : 0.0;
       const cv::Vec3d row(anchor_model_[i].x, anchor_model_[i].y, 1.0);
       ata += w * row * row.t();
@@ -179,24 +194,28 @@ void ObjectMemory::remember(const Polygon& boundary, const cv::Mat& gray, cv::Po
     cv::Mat ax, ay;
     if (!cv::solve(cv::Mat(ata), cv::Mat(atx), ax, cv::DECOMP_CHOLESKY) ||
         !cv::solve(cv::Mat(ata), cv::Mat(aty), ay, cv::DECOMP_CHOLESKY)) {
-      return;
+      return false;
     }
     for (size_t i = 0; i < n; ++i) {
       const Point& p = anchor_model_[i];
-      mapped[i] = Point(ax.at<double>(0) * p.x + ax.at<double>(1) * p.y + ax.at<double>(2),
-                        ay.at<double>(0) * p.x + ay.at<double>(1) * p.y + ay.at<double>(2));
+      (*mapped)[i] = Point(ax.at<double>(0) * p.x + ax.at<double>(1) * p.y + ax.at<double>(2),
+                           ay.at<double>(0) * p.x + ay.at<double>(1) * p.y + ay.at<double>(2));
     }
   }
-  if (shape_rate > 0.0) {
-    for (Point& p : mapped) p += (closest_point_on(boundary, p) - p) * shape_rate;
-    // Evenly spaced again (closest points bunch at corners); the anchor is the new shape.
-    mapped = resample_outline(mapped, static_cast<int>(n));
-    if (mapped.size() != n) return;
-    anchor_model_ = mapped;
-  }
-  placed_ = mapped;
-  learnt_ = placed_;
-  read_edges(gray, tl);
+  return true;
+}
+
+MemoryFit ObjectMemory::fit_at(const Polygon& outline, const cv::Mat& gray, cv::Point tl) const {
+  if (!ready() || outline.size() < 3) return {};
+  // A copy is moved and scaled onto `outline`, mapped onto it and fitted there: the memory's own
+  // place is not touched. Held to the view found there, not to the one last learnt.
+  ObjectMemory probe = *this;
+  const double scale = std::sqrt(std::max(1e-9, area(outline)) / std::max(1e-9, area(placed_)));
+  const Point from = centroid(placed_), to = centroid(outline);
+  for (Point& p : probe.placed_) p = to + (p - from) * scale;
+  if (!probe.map_anchor_onto(outline, &probe.placed_)) return {};
+  probe.learnt_ = probe.placed_;
+  return probe.fit(gray, tl);
 }
 
 void ObjectMemory::read_edges(const cv::Mat& gray, cv::Point tl) {

@@ -61,6 +61,10 @@ class ObjectMemory {
   MemoryFit search(const cv::Mat& gray, cv::Point tl, double radius, double accept_visible);
   // Fits the remembered outline to the grey window, starting from where it was last placed.
   MemoryFit fit(const cv::Mat& gray, cv::Point tl);
+  // The remembered outline mapped onto `outline` (a boundary found elsewhere) and fitted there,
+  // the memory itself unchanged: how much of the remembered object is seen where `outline` says
+  // it is.
+  MemoryFit fit_at(const Polygon& outline, const cv::Mat& gray, cv::Point tl) const;
   // Where the outline was last placed (the last fit, or the last remembered boundary).
   const Polygon& placed() const { return placed_; }
 
@@ -92,6 +96,9 @@ class ObjectMemory {
   // Whether memory point `point`'s own edge crosses `normal` within a pixel of `p`: its polarity
   // (either, if it had no clear edge), at least edge_need(), the remembered levels either side.
   bool own_edge_near(size_t point, const cv::Mat& gray, cv::Point tl, Point p, Point normal) const;
+  // Maps the anchor onto `boundary` by an affine map fitted to its closest points, starting from
+  // *mapped and written there; false when the fit is singular.
+  bool map_anchor_onto(const Polygon& boundary, Polygon* mapped) const;
   // Reads each point's edge at placed_ in the grey window (points without a clear one keep theirs).
   void read_edges(const cv::Mat& gray, cv::Point tl);
   std::vector<double> polarity_;  // +1: brighter outside, -1: darker outside, 0: no clear edge

@@ -140,6 +140,38 @@ TEST(ObjectMemory, FitDoesNotSqueezeTheOutlineToHalfItsLearntHeight) {
   }
 }
 
+// After the object was lost: placed on the object found far from where the memory was, it sees
+// the object; placed on a look-alike of the same shape but other edges (the other polarity, or
+// another grey level inside), it does not. The memory itself stays where it was.
+TEST(ObjectMemory, FitAtSeesTheObjectFoundElsewhereButNotALookAlike) {
+  cv::RNG rng(9);
+  const Polygon start = ellipse_outline({320, 240}, 90, 60);
+  ObjectMemory memory;
+  memory.remember(start, render(start, &rng), {0, 0});
+  const Polygon placed_before = memory.placed();
+  const auto shifted = [](const Polygon& outline, Point shift) {
+    Polygon out = outline;
+    for (Point& p : out) p += shift;
+    return out;
+  };
+  const Polygon object = shifted(start, {-170, 10});      // left of the frame
+  const Polygon look_alike = shifted(start, {160, -20});  // right of it
+  for (int look_alike_level : {30, 115}) {
+    cv::Mat frame = render(object, &rng);
+    std::vector<cv::Point> pts;
+    for (const Point& p : look_alike) pts.emplace_back(cvRound(p.x), cvRound(p.y));
+    cv::fillPoly(frame, std::vector<std::vector<cv::Point>>{pts}, cv::Scalar(look_alike_level),
+                 cv::LINE_AA);
+    const MemoryFit there = memory.fit_at(object, frame, {0, 0});
+    ASSERT_TRUE(there.valid) << look_alike_level;
+    EXPECT_GT(there.visible, 0.9) << look_alike_level;
+    EXPECT_LT(mean_distance(there.outline, object), 1.0) << look_alike_level;
+    const MemoryFit elsewhere = memory.fit_at(look_alike, frame, {0, 0});
+    EXPECT_LT(elsewhere.valid ? elsewhere.visible : 0.0, 0.35) << look_alike_level;
+    EXPECT_LT(mean_distance(memory.placed(), placed_before), 1e-9) << look_alike_level;
+  }
+}
+
 TEST(ObjectMemory, ExplainedByTheObjectsOwnEdgesNotByAnOccludersSide) {
   cv::RNG rng(11);
   const Polygon start = ellipse_outline({320, 240}, 90, 60, 72);

@@ -79,28 +79,29 @@ TrackResult Tracker::Impl::track_lost(const cv::Mat& frame) {
   result.visible = 0.0;
   result.line_ms = in_place_line_ms;
   result.grouping_ms = in_place_grouping_ms;
-  // No match: the last confident boundary stays the output, nothing pending.
-  const auto no_match = [this, &result]() {
-    pending_.clear();
-    pending_matches_ = 0;
+  // Not found this frame: the last confident boundary stays the output. Where the memory sees
+  // the object partly, where its visible part puts it is the better guess: `uncertain`, as a
+  // stand-in with as little seen is while tracking.
+  const auto still_lost = [this, &result, &seen, memory]() {
     result.confidence = 0.0;
     result.boundary = lost_output_;
+    if (memory == MemoryResume::kPartlySeen) {
+      result.boundary = seen.outline;
+      result.state = TrackState::kUncertain;
+      result.held = false;
+      result.visible = seen.visible;
+      result.confidence = seen.visible;
+      result.from_memory = true;
+      result.step = SearchStep::kMemory;
+    }
     return result;
   };
-  // The object is where it was, partly hidden: no whole-frame search for a look-alike.
-  if (memory == MemoryResume::kPartlySeen) {
-    // Where the visible part puts it is the best guess of where it is: `uncertain`, as a
-    // stand-in with as little seen is while tracking.
-    no_match();
-    result.boundary = seen.outline;
-    result.state = TrackState::kUncertain;
-    result.held = false;
-    result.visible = seen.visible;
-    result.confidence = seen.visible;
-    result.from_memory = true;
-    result.step = SearchStep::kMemory;
-    return result;
-  }
+  // No match: nothing pending.
+  const auto no_match = [this, &still_lost]() {
+    pending_.clear();
+    pending_matches_ = 0;
+    return still_lost();
+  };
   // kWholeFrame: the last confident outline placed over the frame, every placement searched.
   const Clock::time_point line_start = Clock::now();
   to_exposed_gray(frame, &search_gray_);
@@ -114,7 +115,9 @@ TrackResult Tracker::Impl::track_lost(const cv::Mat& frame) {
   result.stages.recovery_ms = elapsed_ms(rank_start);
   result.grouping_ms += result.stages.recovery_ms;
 
-  Polygon match = best_match(frame, placements, beyond_count, &result);
+  // Where the memory sees the object partly, a match must show it more of itself than that.
+  const double memory_bar = memory == MemoryResume::kPartlySeen ? seen.visible : -1.0;
+  Polygon match = best_match(frame, placements, beyond_count, memory_bar, &result);
   result.num_detected = static_cast<int>(segments.size());
   if (keep_debug_) debug_.detected = segments;
   if (match.empty()) return no_match();
@@ -122,13 +125,8 @@ TrackResult Tracker::Impl::track_lost(const cv::Mat& frame) {
                                                    0.25 * std::sqrt(area(match));
   pending_matches_ = same_place ? pending_matches_ + 1 : 1;
   pending_ = match;
-  if (pending_matches_ < options_.loss.confirm_frames) {
-    // Not yet trusted: still lost, the last confident boundary stays the output, and with it
-    // no confidence (the match's own is not the output's).
-    result.confidence = 0.0;
-    result.boundary = lost_output_;
-    return result;
-  }
+  // Not yet trusted: still lost (the match's confidence is not the output's).
+  if (pending_matches_ < options_.loss.confirm_frames) return still_lost();
   result.num_kept = match_kept_;
   result.num_vertices = match_graph_.num_vertices();
   result.num_edges = match_graph_.num_edges();
@@ -205,7 +203,7 @@ size_t Tracker::Impl::place_over_frame(const std::vector<Segment>& segments,
 }
 
 Polygon Tracker::Impl::best_match(const cv::Mat& frame, const std::vector<Placement>& placements,
-                                  size_t beyond_count, TrackResult* result) {
+                                  size_t beyond_count, double memory_bar, TrackResult* result) {
   const LossOptions& loss = options_.loss;
   // Every placement is searched and the best match kept (a look-alike found first must not hide
   // the object found later); last frame's match found again is taken at once.
@@ -238,6 +236,9 @@ Polygon Tracker::Impl::best_match(const cv::Mat& frame, const std::vector<Placem
       shape = *d;
       view_changed = true;
     } else {
+      continue;
+    }
+    if (memory_bar >= 0.0 && memory_.fit_at(cycle, search_gray_, {0, 0}).visible <= memory_bar) {
       continue;
     }
     // Both terms are in [0, 1] for a match: how close the shape is, how sure the cycle is. A
