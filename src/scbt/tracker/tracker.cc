@@ -295,6 +295,13 @@ void Tracker::Impl::report_attempt(const Attempt& a, TrackResult* result) {
   }
 }
 
+void Tracker::Impl::report_memory_fit(const MemoryFit& fit, TrackResult* result) {
+  result->visible = fit.visible;
+  result->confidence = fit.visible;
+  result->from_memory = true;
+  result->step = SearchStep::kMemory;
+}
+
 MemoryFit Tracker::Impl::search_memory(const cv::Mat& frame, double accept_visible) {
   const double radius = std::min(kMemorySearchMax, 0.5 * std::sqrt(area(memory_.placed())));
   const cv::Rect roi =
@@ -406,9 +413,7 @@ TrackResult Tracker::Impl::track(const cv::Mat& frame) {
     monitor_.note_partly_seen();
     boundary_ = fit.outline;
     boundary_area_ = area(boundary_);
-    result.from_memory = true;
-    result.step = SearchStep::kMemory;
-    result.confidence = fit.visible;
+    report_memory_fit(fit, &result);
     result.state =
         fit.visible >= options_.min_visible ? TrackState::kTracking : TrackState::kUncertain;
     motion_.update(boundary_);

@@ -282,6 +282,9 @@ class Tracker::Impl {
   void learn_from_cycle(const MemoryCheck& check, cv::Point tl);
   // The memory fitted from places around where it was last placed, up to half the object's size
   // or kMemorySearchMax px away (ObjectMemory::search), in a window of the frame.
+  // A frame whose boundary is the memory's fitted outline: its visible fraction is the frame's
+  // `visible` and confidence, step kMemory.
+  static void report_memory_fit(const MemoryFit& fit, TrackResult* result);
   // The fit returned is valid only when it sees `accept_visible` of the outline.
   MemoryFit search_memory(const cv::Mat& frame, double accept_visible);
   static constexpr double kMemorySearchMax = 72.0;

@@ -89,10 +89,7 @@ TrackResult Tracker::Impl::track_lost(const cv::Mat& frame) {
       result.boundary = seen.outline;
       result.state = TrackState::kUncertain;
       result.held = false;
-      result.visible = seen.visible;
-      result.confidence = seen.visible;
-      result.from_memory = true;
-      result.step = SearchStep::kMemory;
+      report_memory_fit(seen, &result);
     }
     return result;
   };

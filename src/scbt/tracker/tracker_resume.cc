@@ -44,10 +44,7 @@ Tracker::Impl::MemoryResume Tracker::Impl::resume_from_memory(const cv::Mat& fra
   // The remembered edges seen where the object was, as much as a stand-in is `tracking` with:
   // the object, not a look-alike elsewhere. With less, it is there, partly hidden.
   if (seen->visible < options_.min_visible) return MemoryResume::kPartlySeen;
-  result->visible = seen->visible;
-  result->confidence = seen->visible;
-  result->from_memory = true;
-  result->step = SearchStep::kMemory;
+  report_memory_fit(*seen, result);
   resume_tracking_from(frame, seen->outline, result);
   return MemoryResume::kResumed;
 }
