@@ -205,15 +205,23 @@ bool ObjectMemory::map_anchor_onto(const Polygon& boundary, Polygon* mapped) con
   return true;
 }
 
-MemoryFit ObjectMemory::fit_at(const Polygon& outline, const cv::Mat& gray, cv::Point tl) const {
+Polygon ObjectMemory::mapped_onto(const Polygon& outline) const {
   if (!ready() || outline.size() < 3) return {};
-  // A copy is moved and scaled onto `outline`, mapped onto it and fitted there: the memory's own
-  // place is not touched. Held to the view found there, not to the one last learnt.
-  ObjectMemory probe = *this;
+  // From the last place moved and scaled onto `outline`: the robust map then starts near it.
+  Polygon mapped = placed_;
   const double scale = std::sqrt(std::max(1e-9, area(outline)) / std::max(1e-9, area(placed_)));
   const Point from = centroid(placed_), to = centroid(outline);
-  for (Point& p : probe.placed_) p = to + (p - from) * scale;
-  if (!probe.map_anchor_onto(outline, &probe.placed_)) return {};
+  for (Point& p : mapped) p = to + (p - from) * scale;
+  if (!map_anchor_onto(outline, &mapped)) return {};
+  return mapped;
+}
+
+MemoryFit ObjectMemory::fit_at(const Polygon& outline, const cv::Mat& gray, cv::Point tl) const {
+  // A copy is placed on `outline` and fitted there: the memory's own place is not touched. Held
+  // to the view found there, not to the one last learnt.
+  ObjectMemory probe = *this;
+  probe.placed_ = mapped_onto(outline);
+  if (probe.placed_.empty()) return {};
   probe.learnt_ = probe.placed_;
   return probe.fit(gray, tl);
 }

@@ -65,6 +65,10 @@ class ObjectMemory {
   // the memory itself unchanged: how much of the remembered object is seen where `outline` says
   // it is.
   MemoryFit fit_at(const Polygon& outline, const cv::Mat& gray, cv::Point tl) const;
+  // The remembered outline mapped onto `outline` by an affine map (robustly: a part of `outline`
+  // away from the rest of the map does not drag it), without looking at the image; empty when it
+  // cannot be placed. `outline` runs along it when it is the object seen from another view.
+  Polygon mapped_onto(const Polygon& outline) const;
   // Where the outline was last placed (the last fit, or the last remembered boundary).
   const Polygon& placed() const { return placed_; }
 

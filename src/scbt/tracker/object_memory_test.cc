@@ -252,5 +252,29 @@ TEST(ObjectMemory, LearnsThePlaceFromTheBoundaryNotFromWhereItCutsAcrossAnOcclud
   }
 }
 
+// The remembered outline mapped onto another view of it (a little rounder, turned, moved) runs
+// along it; mapped onto the object with an end cut off by an occluder's side, it does not.
+TEST(ObjectMemory, MappedOntoFollowsAnotherViewButNotAnOccludersCut) {
+  cv::RNG rng(5);
+  const Polygon start = ellipse_outline({320, 240}, 90, 60, 64);
+  ObjectMemory memory;
+  memory.remember(start, render(start, &rng), {0, 0});
+  Polygon view = ellipse_outline({0, 0}, 85, 66, 64);
+  for (Point& p : view) {
+    p = Point(360 + 0.98 * p.x - 0.2 * p.y, 250 + 0.2 * p.x + 0.98 * p.y);
+  }
+  const Polygon on_view = memory.mapped_onto(view);
+  ASSERT_FALSE(on_view.empty());
+  EXPECT_LT(mean_distance(on_view, view), 1.0);
+  EXPECT_LE(memory.mismatch(view, on_view, agreement_distance(view)), 0.05);
+  for (const double cut_x : {35.0, 45.0, 55.0}) {
+    Polygon cut = start;  // the right end cut off along the occluder's side x = 320 + cut_x
+    for (Point& p : cut) p.x = std::min(p.x, 320.0 + cut_x);
+    const Polygon on_cut = memory.mapped_onto(cut);
+    ASSERT_FALSE(on_cut.empty());
+    EXPECT_GT(memory.mismatch(cut, on_cut, agreement_distance(cut)), 0.15) << cut_x;
+  }
+}
+
 }  // namespace
 }  // namespace scbt

@@ -196,10 +196,15 @@ class Tracker::Impl {
   size_t place_over_frame(const std::vector<Segment>& segments, std::vector<Placement>* placements);
   // kWholeFrame's best match among the placements, each searched (empty: none); `result` gets
   // its evidence, cost and the search times, match_graph_ and match_kept_ its graph.
-  // With `memory_bar` >= 0 (the memory sees the object partly where it was), only a match where
-  // the memory, fitted there, sees more than that of its outline counts.
+  // With `partly_seen` (the memory's fit where it sees the object partly; its outline searched
+  // first), a match along that fit (along_partial_fit) counts though its shape or inside level
+  // changed (the view or the light on the object changed while it was lost); elsewhere only a
+  // match where the memory, fitted there, sees more of its outline counts.
   Polygon best_match(const cv::Mat& frame, const std::vector<Placement>& placements,
-                     size_t beyond_count, double memory_bar, TrackResult* result);
+                     size_t beyond_count, const MemoryFit* partly_seen, TrackResult* result);
+  // Whether `cycle` runs along the memory's partial fit: within twice the agreement distance (its
+  // hidden part is predicted, less exactly) but for kAgreeMismatch of it, either way.
+  bool along_partial_fit(const Polygon& cycle, const MemoryFit& partly_seen) const;
   // The first search while lost (tracker_resume.cc): tracking's own search, with the tracking
   // bar. True (and *result filled) when the object was found there.
   bool resume_in_place(const cv::Mat& frame, TrackResult* result);

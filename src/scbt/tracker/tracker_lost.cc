@@ -112,9 +112,13 @@ TrackResult Tracker::Impl::track_lost(const cv::Mat& frame) {
   result.stages.recovery_ms = elapsed_ms(rank_start);
   result.grouping_ms += result.stages.recovery_ms;
 
-  // Where the memory sees the object partly, a match must show it more of itself than that.
-  const double memory_bar = memory == MemoryResume::kPartlySeen ? seen.visible : -1.0;
-  Polygon match = best_match(frame, placements, beyond_count, memory_bar, &result);
+  const MemoryFit* partly_seen = memory == MemoryResume::kPartlySeen ? &seen : nullptr;
+  // Where the memory sees the object partly, there first (after last frame's match).
+  if (partly_seen) {
+    placements.insert(placements.begin() + (pending_.empty() ? 0 : 1),
+                      Placement{seen.outline, 0.0, true, 1.0});
+  }
+  Polygon match = best_match(frame, placements, beyond_count, partly_seen, &result);
   result.num_detected = static_cast<int>(segments.size());
   if (keep_debug_) debug_.detected = segments;
   if (match.empty()) return no_match();
@@ -199,8 +203,19 @@ size_t Tracker::Impl::place_over_frame(const std::vector<Segment>& segments,
   return beyond_count;
 }
 
+bool Tracker::Impl::along_partial_fit(const Polygon& cycle, const MemoryFit& partly_seen) const {
+  // Where the partial fit is (its hidden part predicted, less exactly) ...
+  const double near = agreement_distance(partly_seen.outline);
+  if (memory_.mismatch(cycle, partly_seen.outline, 2.0 * near) > kAgreeMismatch) return false;
+  // ... and the remembered outline, in some view: a cycle cut short or widened by an occluder
+  // still in front departs from the outline mapped onto it.
+  const Polygon mapped = memory_.mapped_onto(cycle);
+  return !mapped.empty() && memory_.mismatch(cycle, mapped, near) <= kAgreeMismatch;
+}
+
 Polygon Tracker::Impl::best_match(const cv::Mat& frame, const std::vector<Placement>& placements,
-                                  size_t beyond_count, double memory_bar, TrackResult* result) {
+                                  size_t beyond_count, const MemoryFit* partly_seen,
+                                  TrackResult* result) {
   const LossOptions& loss = options_.loss;
   // Every placement is searched and the best match kept (a look-alike found first must not hide
   // the object found later); last frame's match found again is taken at once.
@@ -223,8 +238,16 @@ Polygon Tracker::Impl::best_match(const cv::Mat& frame, const std::vector<Placem
     const bool beyond = i + beyond_count >= placements.size();
     double shape = 0.0;
     bool view_changed = false;
+    bool along_fit = false;
     if (!beyond && monitor_.matches(cycle, evidence, confidence)) {
       shape = shape_distance(shape_descriptor(cycle), monitor_.reference());
+    } else if (!beyond && partly_seen && confidence >= loss.reacquire_confidence &&
+               along_partial_fit(cycle, *partly_seen)) {
+      // Closed along the outline the memory's own edges put there: the object, though its view
+      // or the light on it changed while it was lost (its shape or inside level with them).
+      along_fit = true;
+      shape = std::min(loss.match_shape_distance,
+                       shape_distance(shape_descriptor(cycle), monitor_.reference()));
     } else if (confidence >= loss.reacquire_confidence) {
       // Seen from another distance or angle, and looking like the object inside.
       const std::optional<double> d =
@@ -235,7 +258,9 @@ Polygon Tracker::Impl::best_match(const cv::Mat& frame, const std::vector<Placem
     } else {
       continue;
     }
-    if (memory_bar >= 0.0 && memory_.fit_at(cycle, search_gray_, {0, 0}).visible <= memory_bar) {
+    // Where the memory sees the object partly, a match must show it more of itself than that.
+    if (partly_seen && !along_fit &&
+        memory_.fit_at(cycle, search_gray_, {0, 0}).visible <= partly_seen->visible) {
       continue;
     }
     // Both terms are in [0, 1] for a match: how close the shape is, how sure the cycle is. A
