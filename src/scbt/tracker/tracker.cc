@@ -153,6 +153,7 @@ void Tracker::Impl::init(const cv::Mat& frame, const Polygon& polygon) {
       polygon, unstretched_level(exposure_stretch_,
                                  sample_edges(polygon, reference_gray_, {0, 0}, 0.0).inside_level));
   pending_.clear();
+  last_partly_seen_ = MemoryFit();
   pending_matches_ = 0;
   keyframes_.clear();
 }

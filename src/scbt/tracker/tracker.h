@@ -40,10 +40,10 @@ namespace scbt {
 //   kMemory       the remembered outline looked for where the object was and around it
 //                 (object_memory), also after a cut, taken when TrackerOptions::min_visible of it
 //                 is seen again; with 35 % seen the object is there, partly hidden: the fitted
-//                 outline is the output (`uncertain`), kWholeFrame searches there first and takes
-//                 a cycle along it though its shape or inside level changed (another view or
-//                 light), elsewhere only a match on which the memory, fitted there, sees more of
-//                 itself.
+//                 outline is the output (`uncertain`), and kWholeFrame searches there first and
+//                 takes a cycle along it though its shape or inside level changed (another view
+//                 or light), elsewhere a match on which the memory, fitted there, sees more of
+//                 itself, or for a second after that fit one found 5 frames in a row.
 //   kWholeFrame   the last confident outline placed over the whole frame (where it was last
 //                 matched and seen, where the scene keyframes put it, the best-scoring places, then
 //                 other sizes and views), every placement searched and the best match taken once

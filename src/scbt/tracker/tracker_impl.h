@@ -199,9 +199,11 @@ class Tracker::Impl {
   // With `partly_seen` (the memory's fit where it sees the object partly; its outline searched
   // first), a match along that fit (along_partial_fit) counts though its shape or inside level
   // changed (the view or the light on the object changed while it was lost); elsewhere only a
-  // match where the memory, fitted there, sees more of its outline counts.
+  // match where the memory, fitted there, sees more of its outline counts, or, when the fit is
+  // `held` from an earlier frame, any match, ranked last and marked (match_unvetted_).
   Polygon best_match(const cv::Mat& frame, const std::vector<Placement>& placements,
-                     size_t beyond_count, const MemoryFit* partly_seen, TrackResult* result);
+                     size_t beyond_count, const MemoryFit* partly_seen, bool held,
+                     TrackResult* result);
   // Whether `cycle` runs along the memory's partial fit: within twice the agreement distance (its
   // hidden part is predicted, less exactly) but for kAgreeMismatch of it, either way.
   bool along_partial_fit(const Polygon& cycle, const MemoryFit& partly_seen) const;
@@ -235,6 +237,8 @@ class Tracker::Impl {
   int pending_matches_ = 0;
   SegmentGraph match_graph_;  // the graph the best match while lost was found in
   int match_kept_ = 0;
+  // The best match while lost fails a held partial fit's judgement (best_match).
+  bool match_unvetted_ = false;
   StableChooser chooser_;     // its buffers and distance cache are reused frame to frame
   ShapeMemory shape_memory_;  // the shape the choice weighs candidates against
   ObjectMemory memory_;       // the object's outline and edges (TrackerOptions::object_memory)
@@ -300,6 +304,12 @@ class Tracker::Impl {
   // needs no such confirmation.
   static constexpr int kProvisionalFrames = 15;
   int memory_provisional_ = 0;
+  // While lost: the memory's last fit that saw the object partly and the frames since; for
+  // kPartlySeenHold frames (a second at 30 frames a second) it judges the whole frame's matches
+  // (best_match's `held`).
+  static constexpr int kPartlySeenHold = 30;
+  MemoryFit last_partly_seen_;
+  int partly_seen_age_ = 0;
   bool keep_debug_ = false;
   TrackDebug debug_;
 };

@@ -112,13 +112,23 @@ TrackResult Tracker::Impl::track_lost(const cv::Mat& frame) {
   result.stages.recovery_ms = elapsed_ms(rank_start);
   result.grouping_ms += result.stages.recovery_ms;
 
-  const MemoryFit* partly_seen = memory == MemoryResume::kPartlySeen ? &seen : nullptr;
-  // Where the memory sees the object partly, there first (after last frame's match).
+  // Where the memory sees the object partly, matches are judged by its fit, and for a while after
+  // it last did by that fit (held): under an occluder that stays, what it sees of the object comes
+  // and goes, and a cycle cut short across the occluder must not slip in meanwhile.
+  if (memory == MemoryResume::kPartlySeen) {
+    last_partly_seen_ = seen;
+    partly_seen_age_ = 0;
+  } else if (last_partly_seen_.valid && ++partly_seen_age_ > kPartlySeenHold) {
+    last_partly_seen_ = MemoryFit();
+  }
+  const MemoryFit* partly_seen = last_partly_seen_.valid ? &last_partly_seen_ : nullptr;
+  // There first (after last frame's match).
   if (partly_seen) {
     placements.insert(placements.begin() + (pending_.empty() ? 0 : 1),
-                      Placement{seen.outline, 0.0, true, 1.0});
+                      Placement{partly_seen->outline, 0.0, true, 1.0});
   }
-  Polygon match = best_match(frame, placements, beyond_count, partly_seen, &result);
+  const bool held = partly_seen && memory != MemoryResume::kPartlySeen;
+  Polygon match = best_match(frame, placements, beyond_count, partly_seen, held, &result);
   result.num_detected = static_cast<int>(segments.size());
   if (keep_debug_) debug_.detected = segments;
   if (match.empty()) return no_match();
@@ -127,7 +137,11 @@ TrackResult Tracker::Impl::track_lost(const cv::Mat& frame) {
   pending_matches_ = same_place ? pending_matches_ + 1 : 1;
   pending_ = match;
   // Not yet trusted: still lost (the match's confidence is not the output's).
-  if (pending_matches_ < options_.loss.confirm_frames) return still_lost();
+  // A match the held fit would reject must be found as often as a new view must be seen: the
+  // held fit may be stale (the object moved on while it was not seen).
+  const int confirm = match_unvetted_ ? std::max(kNewViewFrames, options_.loss.confirm_frames)
+                                      : options_.loss.confirm_frames;
+  if (pending_matches_ < confirm) return still_lost();
   result.num_kept = match_kept_;
   result.num_vertices = match_graph_.num_vertices();
   result.num_edges = match_graph_.num_edges();
@@ -214,7 +228,7 @@ bool Tracker::Impl::along_partial_fit(const Polygon& cycle, const MemoryFit& par
 }
 
 Polygon Tracker::Impl::best_match(const cv::Mat& frame, const std::vector<Placement>& placements,
-                                  size_t beyond_count, const MemoryFit* partly_seen,
+                                  size_t beyond_count, const MemoryFit* partly_seen, bool held,
                                   TrackResult* result) {
   const LossOptions& loss = options_.loss;
   // Every placement is searched and the best match kept (a look-alike found first must not hide
@@ -259,16 +273,19 @@ Polygon Tracker::Impl::best_match(const cv::Mat& frame, const std::vector<Placem
       continue;
     }
     // Where the memory sees the object partly, a match must show it more of itself than that.
+    // Judged by a held fit (perhaps stale), one that does not ranks after every other, marked.
+    bool unvetted = false;
     if (partly_seen && !along_fit &&
         memory_.fit_at(cycle, search_gray_, {0, 0}).visible <= partly_seen->visible) {
-      continue;
+      if (!held) continue;
+      unvetted = true;
     }
     // Both terms are in [0, 1] for a match: how close the shape is, how sure the cycle is. A
     // match seen from another distance or angle comes after every ordinary one: an object rarely
     // changes its size or its view much while out of sight, and the inside of a see-through or
     // plain object looks much like a smaller cycle within it.
-    const double score =
-        shape / loss.match_shape_distance + (1.0 - confidence) + (view_changed ? 2.0 : 0.0);
+    const double score = shape / loss.match_shape_distance + (1.0 - confidence) +
+                         (view_changed ? 2.0 : 0.0) + (unvetted ? 4.0 : 0.0);
     if (!match.empty() && score >= best_score) continue;
     best_score = score;
     result->evidence = evidence;
@@ -279,6 +296,7 @@ Polygon Tracker::Impl::best_match(const cv::Mat& frame, const std::vector<Placem
     match = std::move(cycle);
     match_graph_ = a->graph;
     match_kept_ = static_cast<int>(a->kept.size());
+    match_unvetted_ = unvetted;
     if (i == 0 && !pending_.empty() && !view_changed) break;
   }
   return match;

@@ -60,6 +60,7 @@ void Tracker::Impl::resume_tracking_from(const cv::Mat& frame, Polygon boundary,
   boundary_ = std::move(boundary);
   boundary_area_ = area(boundary_);
   pending_.clear();
+  last_partly_seen_ = MemoryFit();
   pending_matches_ = 0;
   // The motion model, the motion reference (the window the next frame's search would look at)
   // and the appearance that confirms predictions start again from this frame.
