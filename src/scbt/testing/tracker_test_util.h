@@ -22,4 +22,15 @@ inline std::string describe_run(const std::vector<TrackResult>& results,
   return out.str();
 }
 
+// Tracks `frames` from the first frame's true outline: one result per frame, results[0] (the
+// initial frame) a default one.
+inline std::vector<TrackResult> track_from_truth(const std::vector<SceneFrame>& frames,
+                                                 const TrackerOptions& options = {}) {
+  Tracker tracker(options);
+  tracker.init(frames[0].image, frames[0].truth);
+  std::vector<TrackResult> results(1);
+  for (size_t k = 1; k < frames.size(); ++k) results.push_back(tracker.track(frames[k].image));
+  return results;
+}
+
 }  // namespace scbt

@@ -67,10 +67,7 @@ CutRun track_cut_scene(SceneShape shape, std::uint32_t seed, double scale, Point
                    cv::Scalar::all(scene.object_level), cv::LINE_AA);
     }
   }
-  Tracker tracker;
-  tracker.init(run.frames[0].image, run.frames[0].truth);
-  run.results.emplace_back();
-  for (int k = 1; k < kFrames; ++k) run.results.push_back(tracker.track(run.frames[k].image));
+  run.results = track_from_truth(run.frames);
   return run;
 }
 

@@ -88,10 +88,7 @@ ReturnRun render_run(SceneShape shape, std::uint32_t seed, Return how, bool deco
 }
 
 void track(ReturnRun* run, const TrackerOptions& options = {}) {
-  Tracker tracker(options);
-  tracker.init(run->frames[0].image, run->frames[0].truth);
-  run->results.assign(1, TrackResult());
-  for (int k = 1; k < kFrames; ++k) run->results.push_back(tracker.track(run->frames[k].image));
+  run->results = track_from_truth(run->frames, options);
 }
 
 class TrackerReacquireTest

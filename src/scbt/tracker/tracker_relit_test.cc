@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <tuple>
 
+#include "scbt/geometry/polygon.h"
 #include "scbt/synthetic/scene.h"
 #include "scbt/testing/tracker_test_util.h"
 #include "scbt/tracker/tracker.h"
@@ -59,25 +60,12 @@ RelitRun render_run(SceneShape shape, std::uint32_t seed) {
       run.frames.push_back({cv::Mat(scene.size, CV_8UC3, cv::Scalar::all(128)), {}});
     } else {
       SceneFrame frame = render_frame(scene, background, model, after[k - kVisible - kGap], k);
-      double left = 1e9, right = -1e9;
-      for (const Point& p : frame.truth) {
-        left = std::min(left, p.x);
-        right = std::max(right, p.x);
-      }
-      cast_shadow(&frame.image, left + 0.3 * (right - left), right);
+      const cv::Rect2d box = bounding_box(frame.truth);
+      cast_shadow(&frame.image, box.x + 0.3 * box.width, box.x + box.width);
       run.frames.push_back(std::move(frame));
     }
   }
   return run;
-}
-
-void track(RelitRun* run, bool object_memory) {
-  TrackerOptions options;
-  options.object_memory = object_memory;
-  Tracker tracker(options);
-  tracker.init(run->frames[0].image, run->frames[0].truth);
-  run->results.assign(1, TrackResult());
-  for (int k = 1; k < kFrames; ++k) run->results.push_back(tracker.track(run->frames[k].image));
 }
 
 // The first frame after the gap the run is `tracking` (-1: none); every `tracking` frame after
@@ -98,7 +86,9 @@ class TrackerRelitTest : public ::testing::TestWithParam<std::tuple<SceneShape, 
 TEST_P(TrackerRelitTest, TheMemoryFindsTheObjectInAnotherLight) {
   const auto [shape, seed] = GetParam();
   RelitRun run = render_run(shape, seed);
-  track(&run, true);
+  TrackerOptions options;
+  options.object_memory = true;
+  run.results = track_from_truth(run.frames, options);
   SCOPED_TRACE(describe_run(run.results, run.frames));
   EXPECT_EQ(run.results[kVisible + kGap - 1].state, TrackState::kLost);
   const int found = first_tracking(run);
