@@ -168,6 +168,14 @@ void ObjectMemory::remember(const Polygon& boundary, const cv::Mat& gray, cv::Po
   read_edges(gray, tl);
 }
 
+void ObjectMemory::place_onto(const Polygon& boundary, const cv::Mat& gray, cv::Point tl) {
+  Polygon mapped = mapped_onto(boundary);
+  if (mapped.empty()) return;
+  placed_ = std::move(mapped);
+  learnt_ = placed_;
+  read_edges(gray, tl);
+}
+
 bool ObjectMemory::map_anchor_onto(const Polygon& boundary, Polygon* mapped) const {
   // An affine map of the anchor fitted to the closest points of `boundary`, a few rounds from
   // *mapped. Points farther from the boundary than twice the agreement distance weigh nothing

@@ -53,6 +53,10 @@ class ObjectMemory {
   // frames of a boundary cut short by an occluder are not). The first call restarts.
   void remember(const Polygon& boundary, const cv::Mat& gray, cv::Point tl,
                 double shape_rate = 0.0);
+  // Moves the remembered outline onto `boundary`, found far from where it was last placed (the
+  // object found again), by the robust affine map of mapped_onto(), keeping its shape, and reads
+  // the edges there as remember() does.
+  void place_onto(const Polygon& boundary, const cv::Mat& gray, cv::Point tl);
   // Fits the remembered outline from starting places on a grid up to `radius` px around where it
   // was last placed (the last place included) and returns the fit that sees most of it: the
   // object found again when the last place went wrong. It becomes the new place only when it sees

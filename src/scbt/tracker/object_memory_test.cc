@@ -276,5 +276,39 @@ TEST(ObjectMemory, MappedOntoFollowsAnotherViewButNotAnOccludersCut) {
   }
 }
 
+// The object found again far from where the memory was last placed, its right end cut off by an
+// occluder still in front: placed onto that boundary, the memory keeps its whole outline, and a
+// few fits there (frames) put it on the whole object, the hidden end predicted, seeing only the
+// visible part. A memory restarted from the cut boundary would remember the cut as the object.
+TEST(ObjectMemory, PlaceOntoKeepsTheWholeOutlineWhereACutObjectIsFoundAgain) {
+  cv::RNG rng(7);
+  const Polygon start = ellipse_outline({200, 180}, 90, 60, 64);
+  ObjectMemory memory;
+  memory.remember(start, render(start, &rng), {0, 0});
+  for (const double cut_x : {30.0, 45.0}) {
+    const Polygon moved = ellipse_outline({380, 290}, 90, 60, 64);
+    Polygon cut = moved;  // the right end cut off along the occluder's side x = 380 + cut_x
+    for (Point& p : cut) p.x = std::min(p.x, 380.0 + cut_x);
+    cv::Mat frame = render(moved, &rng);
+    const int side = cvRound(380 + cut_x);
+    frame(cv::Rect(side, 0, frame.cols - side, frame.rows)).setTo(20);
+
+    ObjectMemory placed = memory;
+    placed.place_onto(cut, frame, {0, 0});
+    MemoryFit fit;
+    for (int k = 0; k < 3; ++k) fit = placed.fit(frame, {0, 0});
+    ASSERT_TRUE(fit.valid) << cut_x;
+    EXPECT_LT(mean_distance(fit.outline, moved), 1.0) << cut_x;
+    EXPECT_LT(mean_distance(moved, fit.outline), 1.0) << cut_x;
+    EXPECT_GT(fit.visible, 0.5) << cut_x;
+    EXPECT_LT(fit.visible, 0.8) << cut_x;  // the hidden end is not seen
+
+    ObjectMemory restarted;
+    restarted.restart(cut, frame, {0, 0});
+    const MemoryFit cut_fit = restarted.fit(frame, {0, 0});
+    EXPECT_GT(mean_distance(moved, cut_fit.outline), 5.0) << cut_x;
+  }
+}
+
 }  // namespace
 }  // namespace scbt

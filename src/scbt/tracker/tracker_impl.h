@@ -213,7 +213,12 @@ class Tracker::Impl {
   // Tracking starts again from `boundary`, found in `frame` by either search while lost: the
   // state, the last confident boundary, the motion model and its references restart there.
   // `result` gets the state and the boundary; its evidence must already be the boundary's.
-  void resume_tracking_from(const cv::Mat& frame, Polygon boundary, TrackResult* result);
+  // `vouched_by_memory`: the memory saw the object partly and vouched for the boundary (it runs
+  // along the partial fit, or the memory fitted on it sees more of itself): the memory is moved
+  // onto it and keeps its outline instead of restarting from it (the boundary may be cut short
+  // by an occluder still in front).
+  void resume_tracking_from(const cv::Mat& frame, Polygon boundary, TrackResult* result,
+                            bool vouched_by_memory = false);
   // After a frame whose boundary was found by attempt `a`: its grey window becomes the motion
   // reference (TrackerOptions::recover_by_motion).
   void remember_reference(const Attempt& a);
@@ -239,6 +244,8 @@ class Tracker::Impl {
   int match_kept_ = 0;
   // The best match while lost fails a held partial fit's judgement (best_match).
   bool match_unvetted_ = false;
+  // The best match while lost was vouched for by the memory's partial fit (best_match).
+  bool match_vouched_ = false;
   StableChooser chooser_;     // its buffers and distance cache are reused frame to frame
   ShapeMemory shape_memory_;  // the shape the choice weighs candidates against
   ObjectMemory memory_;       // the object's outline and edges (TrackerOptions::object_memory)

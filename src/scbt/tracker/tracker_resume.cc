@@ -50,7 +50,7 @@ Tracker::Impl::MemoryResume Tracker::Impl::resume_from_memory(const cv::Mat& fra
 }
 
 void Tracker::Impl::resume_tracking_from(const cv::Mat& frame, Polygon boundary,
-                                         TrackResult* result) {
+                                         TrackResult* result, bool vouched_by_memory) {
   result->state = TrackState::kTracking;
   result->held = false;
   result->reacquired = true;
@@ -76,10 +76,15 @@ void Tracker::Impl::resume_tracking_from(const cv::Mat& frame, Polygon boundary,
   }
   shape_memory_.restart(boundary_);
   // Found by the memory itself: it keeps what it knows (the object's edges where it is still
-  // hidden included), placed where it was found.
+  // hidden included), placed where it was found. Vouched for by it: moved onto the match, whose
+  // cut across an occluder still in front is not learnt; no look-alike, so no provisional time.
   if (options_.object_memory && !result->from_memory) {
-    memory_.restart(boundary_, reference_gray_, reference_roi_.tl());
-    memory_provisional_ = kProvisionalFrames;
+    if (vouched_by_memory) {
+      memory_.place_onto(boundary_, reference_gray_, reference_roi_.tl());
+    } else {
+      memory_.restart(boundary_, reference_gray_, reference_roi_.tl());
+      memory_provisional_ = kProvisionalFrames;
+    }
   }
   result->boundary = boundary_;
 }
