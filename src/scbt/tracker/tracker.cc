@@ -148,6 +148,7 @@ void Tracker::Impl::init(const cv::Mat& frame, const Polygon& polygon) {
   memory_.clear();
   memory_provisional_ = 0;
   new_view_frames_ = 0;
+  frames_since_stand_in_ = kPartlySeenHold + 1;
   if (options_.object_memory) memory_.restart(boundary_, reference_gray_, {0, 0});
   monitor_.reset(
       polygon, unstretched_level(exposure_stretch_,
@@ -407,6 +408,12 @@ TrackResult Tracker::Impl::track(const cv::Mat& frame) {
   }
   const MemoryFit& fit = memory.fit;
   const MemoryVerdict verdict = memory.verdict;
+  // With no fit, where the memory was last placed, before this frame's cycle moves it.
+  const Polygon last_placed =
+      options_.object_memory && memory_.ready() && !fit.valid ? memory_.placed() : Polygon();
+  frames_since_stand_in_ = verdict == MemoryVerdict::kStandsIn
+                               ? 0
+                               : std::min(frames_since_stand_in_ + 1, kPartlySeenHold + 1);
   if (verdict == MemoryVerdict::kStandsIn) {
     // The remembered outline where the visible part of the object puts it. The loss monitor
     // learns nothing from it but that the object is there, partly hidden; the state says how much
@@ -472,6 +479,21 @@ TrackResult Tracker::Impl::track(const cv::Mat& frame) {
     result.step = SearchStep::kNone;  // the boundary reported is no step's
   }
   if (result.state == TrackState::kLost) lost_output_ = boundary_;
+  if (options_.object_memory && memory_.ready() && !result.held &&
+      result.state != TrackState::kLost && frames_since_stand_in_ <= kPartlySeenHold &&
+      (verdict == MemoryVerdict::kDeparts || verdict == MemoryVerdict::kUnjudged)) {
+    // Taken within a second of the memory standing in for the partly hidden object, but most of
+    // it away from where the memory was fitted (or, with no fit, last placed): an occluder's
+    // outline closing the best cycle while the memory sees too little to stand in. The frame is
+    // only as sure as the memory's view of the object.
+    const Polygon& remembered = fit.valid ? fit.outline : last_placed;
+    if (!remembered.empty() &&
+        memory_.mismatch(boundary_, remembered, agreement_distance(remembered)) >
+            kElsewhereMismatch) {
+      result.confidence = std::min(result.confidence, result.visible);
+      if (result.confidence < options_.min_visible) result.state = TrackState::kUncertain;
+    }
+  }
 
   result.boundary = boundary_;
   report_attempt(*a, &result);

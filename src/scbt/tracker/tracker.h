@@ -80,6 +80,8 @@ struct TrackResult {
   SearchStep step = SearchStep::kNone;  // the step of the search that found `boundary`
   // How far to trust `boundary` (confidence.h; 0 when held or lost) and what that makes of the
   // frame (track_state.h). While lost, `boundary` is the last confident one and `held` is set.
+  // With the object memory, at most `visible` for a frame the memory stands in for, and for a
+  // cycle taken within a second of that though most of it departs from the remembered object.
   TrackState state = TrackState::kTracking;
   double confidence = 0.0;
   BoundaryEvidence evidence;  // what the confidence was computed from (defaults when held)

@@ -274,6 +274,11 @@ class Tracker::Impl {
   // A confident cycle along the fitted outline with this much of it visible gives the memory its
   // shape (with less, part may be hidden and cut off by the cycle: only its place and view).
   static constexpr double kReshapeVisible = 0.9;
+  // A cycle taken within kPartlySeenHold frames of a stand-in, farther than the agreement
+  // distance from more than this fraction of the fitted outline, is reported with the memory's
+  // confidence (track()); the frames since the memory last stood in.
+  static constexpr double kElsewhereMismatch = 0.5;
+  int frames_since_stand_in_ = 0;
   // The fraction of the way the memory's shape moves onto such a cycle per frame: about a second
   // (30 frames) to take a new view's shape.
   static constexpr double kShapeRate = 1.0 / 30.0;

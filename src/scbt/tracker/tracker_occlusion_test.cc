@@ -5,12 +5,15 @@
 // each event's boundary is back within 10 frames of the occluder leaving.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <iostream>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "scbt/eval/alignment_error.h"
 #include "scbt/eval/occlusion.h"
+#include "scbt/eval/roc.h"
 #include "scbt/synthetic/scene.h"
 #include "scbt/tracker/tracker.h"
 
@@ -36,9 +39,9 @@ OcclusionScore& operator+=(OcclusionScore& a, const OcclusionScore& b) {
 }
 
 // One clip: `shape` on the smooth default path (seeded), the occluders of `spec` (seeded) drawn
-// over it, tracked from the first true outline with the object memory on or off.
-OcclusionScore track_occluded_clip(SceneShape shape, std::uint32_t seed, const std::string& spec,
-                                   bool object_memory) {
+// over it; *plan_out (if given) gets the occluders.
+std::vector<SceneFrame> occluded_clip(SceneShape shape, std::uint32_t seed, const std::string& spec,
+                                      OcclusionPlan* plan_out = nullptr) {
   SceneOptions scene;
   scene.seed = seed;
   scene.shape = shape;
@@ -49,6 +52,17 @@ OcclusionScore track_occluded_clip(SceneShape shape, std::uint32_t seed, const s
   for (const SceneFrame& f : clip) truth.push_back(f.truth);
   const OcclusionPlan plan(parse_occlusion_spec(spec), truth, seed);
   for (int k = 0; k < kFrames; ++k) plan.draw(k, &clip[k].image);
+  if (plan_out) *plan_out = plan;
+  return clip;
+}
+
+// The clip tracked from the first true outline with the object memory on or off.
+OcclusionScore track_occluded_clip(SceneShape shape, std::uint32_t seed, const std::string& spec,
+                                   bool object_memory) {
+  OcclusionPlan plan;
+  const std::vector<SceneFrame> clip = occluded_clip(shape, seed, spec, &plan);
+  std::vector<Polygon> truth;
+  for (const SceneFrame& f : clip) truth.push_back(f.truth);
 
   TrackerOptions options;
   options.object_memory = object_memory;
@@ -100,6 +114,35 @@ TEST_P(OcclusionTest, TheMemoryKeepsTheObjectAndComesBack) {
             << " events back\n";
   EXPECT_GE(success, 0.92);
   EXPECT_GE(s.back, s.events - 1);
+}
+
+// A hand-like blob over half the outline: where the boundary leaves the object (the hand's
+// outline closing the best cycle while the memory sees too little of the object to stand in),
+// its confidence is the memory's view of the object. Scored as `scbt eval` scores it: the ROC
+// AUC of 1 - confidence against frames 10 px or more off, pooled over rims and boxes, seeds 1-4.
+TEST(OcclusionTest, TheConfidenceFallsWhereTheBoundaryLeavesTheRememberedObject) {
+  std::vector<double> doubt;
+  std::vector<bool> wrong;
+  for (SceneShape shape : {SceneShape::kRim, SceneShape::kBox}) {
+    for (std::uint32_t seed = 1; seed <= 4; ++seed) {
+      const std::vector<SceneFrame> clip = occluded_clip(shape, seed, "0.5,1.5,hand,sweep,solid");
+      TrackerOptions options;
+      options.object_memory = true;
+      Tracker tracker(options);
+      tracker.init(clip[0].image, clip[0].truth);
+      for (size_t k = 1; k < clip.size(); ++k) {
+        const TrackResult r = tracker.track(clip[k].image);
+        doubt.push_back(1.0 - r.confidence);
+        wrong.push_back(alignment_error(r.boundary, clip[k].truth, clip[k].image.size()) >=
+                        kNearPx);
+      }
+    }
+  }
+  ASSERT_GT(std::count(wrong.begin(), wrong.end(), true), 0);
+  const std::optional<double> auc = roc_auc(doubt, wrong);
+  ASSERT_TRUE(auc.has_value());
+  std::cout << "confidence ROC AUC " << *auc << " over " << wrong.size() << " frames\n";
+  EXPECT_GE(*auc, 0.98);
 }
 
 INSTANTIATE_TEST_SUITE_P(Occluders, OcclusionTest,

@@ -62,6 +62,7 @@ void Tracker::Impl::resume_tracking_from(const cv::Mat& frame, Polygon boundary,
   pending_.clear();
   last_partly_seen_ = MemoryFit();
   pending_matches_ = 0;
+  frames_since_stand_in_ = kPartlySeenHold + 1;
   // The motion model, the motion reference (the window the next frame's search would look at)
   // and the appearance that confirms predictions start again from this frame.
   motion_.reset();
