@@ -244,8 +244,6 @@ class Tracker::Impl {
   int match_kept_ = 0;
   // The best match while lost fails a held partial fit's judgement (best_match).
   bool match_unvetted_ = false;
-  // The best match while lost was vouched for by the memory's partial fit (best_match).
-  bool match_vouched_ = false;
   StableChooser chooser_;     // its buffers and distance cache are reused frame to frame
   ShapeMemory shape_memory_;  // the shape the choice weighs candidates against
   ObjectMemory memory_;       // the object's outline and edges (TrackerOptions::object_memory)
@@ -301,6 +299,11 @@ class Tracker::Impl {
   // What the memory learns from the confident cycle taken this frame (boundary_, found in gray_
   // at `tl`), by the check's verdict.
   void learn_from_cycle(const MemoryCheck& check, cv::Point tl);
+  // After a frame's state is decided (not held, not lost): a cycle taken though it departs from
+  // the memory (check) lowers the frame's confidence to `visible` (kElsewhereMismatch).
+  // `last_placed`: where the memory was before this frame's cycle moved it (used with no fit).
+  void doubt_departure_from_memory(const MemoryCheck& check, const Polygon& last_placed,
+                                   TrackResult* result);
   // The memory fitted from places around where it was last placed, up to half the object's size
   // or kMemorySearchMax px away (ObjectMemory::search), in a window of the frame.
   // A frame whose boundary is the memory's fitted outline: its visible fraction is the frame's

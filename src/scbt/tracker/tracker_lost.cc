@@ -147,7 +147,8 @@ TrackResult Tracker::Impl::track_lost(const cv::Mat& frame) {
   result.num_edges = match_graph_.num_edges();
   if (keep_debug_) debug_.graph = match_graph_;
   result.step = SearchStep::kWholeFrame;
-  resume_tracking_from(frame, std::move(match), &result, match_vouched_);
+  // A match the memory's partial fit vouched for keeps the memory's outline.
+  resume_tracking_from(frame, std::move(match), &result, partly_seen && !match_unvetted_);
   return result;
 }
 
@@ -280,7 +281,6 @@ Polygon Tracker::Impl::best_match(const cv::Mat& frame, const std::vector<Placem
       if (!held) continue;
       unvetted = true;
     }
-    const bool vouched = partly_seen && !unvetted;
     // Both terms are in [0, 1] for a match: how close the shape is, how sure the cycle is. A
     // match seen from another distance or angle comes after every ordinary one: an object rarely
     // changes its size or its view much while out of sight, and the inside of a see-through or
@@ -298,7 +298,6 @@ Polygon Tracker::Impl::best_match(const cv::Mat& frame, const std::vector<Placem
     match_graph_ = a->graph;
     match_kept_ = static_cast<int>(a->kept.size());
     match_unvetted_ = unvetted;
-    match_vouched_ = vouched;
     if (i == 0 && !pending_.empty() && !view_changed) break;
   }
   return match;

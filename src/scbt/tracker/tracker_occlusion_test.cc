@@ -15,6 +15,7 @@
 #include "scbt/eval/occlusion.h"
 #include "scbt/eval/roc.h"
 #include "scbt/synthetic/scene.h"
+#include "scbt/testing/tracker_test_util.h"
 #include "scbt/tracker/tracker.h"
 
 namespace scbt {
@@ -61,18 +62,13 @@ OcclusionScore track_occluded_clip(SceneShape shape, std::uint32_t seed, const s
                                    bool object_memory) {
   OcclusionPlan plan;
   const std::vector<SceneFrame> clip = occluded_clip(shape, seed, spec, &plan);
-  std::vector<Polygon> truth;
-  for (const SceneFrame& f : clip) truth.push_back(f.truth);
-
   TrackerOptions options;
   options.object_memory = object_memory;
-  Tracker tracker(options);
-  tracker.init(clip[0].image, truth[0]);
+  const std::vector<TrackResult> results = track_from_truth(clip, options);
   std::vector<bool> near(kFrames, true);
   OcclusionScore score;
   for (int k = 1; k < kFrames; ++k) {
-    const TrackResult result = tracker.track(clip[k].image);
-    near[k] = alignment_error(result.boundary, truth[k], clip[k].image.size()) < kNearPx;
+    near[k] = alignment_error(results[k].boundary, clip[k].truth, clip[k].image.size()) < kNearPx;
     ++score.frames;
     score.near += near[k] ? 1 : 0;
   }
@@ -128,12 +124,10 @@ TEST(OcclusionTest, TheConfidenceFallsWhereTheBoundaryLeavesTheRememberedObject)
       const std::vector<SceneFrame> clip = occluded_clip(shape, seed, "0.5,1.5,hand,sweep,solid");
       TrackerOptions options;
       options.object_memory = true;
-      Tracker tracker(options);
-      tracker.init(clip[0].image, clip[0].truth);
+      const std::vector<TrackResult> results = track_from_truth(clip, options);
       for (size_t k = 1; k < clip.size(); ++k) {
-        const TrackResult r = tracker.track(clip[k].image);
-        doubt.push_back(1.0 - r.confidence);
-        wrong.push_back(alignment_error(r.boundary, clip[k].truth, clip[k].image.size()) >=
+        doubt.push_back(1.0 - results[k].confidence);
+        wrong.push_back(alignment_error(results[k].boundary, clip[k].truth, clip[k].image.size()) >=
                         kNearPx);
       }
     }
