@@ -317,12 +317,6 @@ TrackResult Tracker::Impl::track(const cv::Mat& frame) {
   frames_since_stand_in_ = verdict == MemoryVerdict::kStandsIn
                                ? 0
                                : std::min(frames_since_stand_in_ + 1, kPartlySeenHold + 1);
-  // With no fit, where the memory was last placed, before this frame's cycle moves it (needed
-  // only within a second of a stand-in: doubt_departure_from_memory).
-  const Polygon last_placed = options_.object_memory && memory_.ready() && !fit.valid &&
-                                      frames_since_stand_in_ <= kPartlySeenHold
-                                  ? memory_.placed()
-                                  : Polygon();
   if (verdict == MemoryVerdict::kStandsIn) {
     // The remembered outline where the visible part of the object puts it. The loss monitor
     // learns nothing from it but that the object is there, partly hidden; the state says how much
@@ -338,10 +332,12 @@ TrackResult Tracker::Impl::track(const cv::Mat& frame) {
     report_attempt(*a, &result);
     return result;
   }
-
+  bool departs = false;
   if (a->choice) {
     // Before the grey window is handed to the motion reference, and against the previous boundary.
     if (!a->assessed) assess(a, boundary_);
+    // Before a confident cycle moves the memory.
+    departs = departs_after_stand_in(memory, *a);
     result.evidence = a->evidence;
     result.confidence = a->confidence;
     check_view_cut(frame, result);  // before the motion reference moves on
@@ -388,9 +384,7 @@ TrackResult Tracker::Impl::track(const cv::Mat& frame) {
     result.step = SearchStep::kNone;  // the boundary reported is no step's
   }
   if (result.state == TrackState::kLost) lost_output_ = boundary_;
-  if (!result.held && result.state != TrackState::kLost) {
-    doubt_departure_from_memory(memory, last_placed, &result);
-  }
+  if (departs && result.state != TrackState::kLost) doubt_departure_from_memory(&result);
 
   result.boundary = boundary_;
   report_attempt(*a, &result);

@@ -299,11 +299,12 @@ class Tracker::Impl {
   // What the memory learns from the confident cycle taken this frame (boundary_, found in gray_
   // at `tl`), by the check's verdict.
   void learn_from_cycle(const MemoryCheck& check, cv::Point tl);
-  // After a frame's state is decided (not held, not lost): a cycle taken though it departs from
-  // the memory (check) lowers the frame's confidence to `visible` (kElsewhereMismatch).
-  // `last_placed`: where the memory was before this frame's cycle moved it (used with no fit).
-  void doubt_departure_from_memory(const MemoryCheck& check, const Polygon& last_placed,
-                                   TrackResult* result);
+  // Whether the attempt's cycle, within a second of the memory standing in, lies mostly away from
+  // where the memory was fitted (or, with no fit, last placed): asked before the cycle moves it.
+  bool departs_after_stand_in(const MemoryCheck& check, const Attempt& a) const;
+  // After a frame's state is decided (not held, not lost), for a cycle taken though it departs
+  // after a stand-in: the frame's confidence is lowered to `visible`.
+  void doubt_departure_from_memory(TrackResult* result) const;
   // The memory fitted from places around where it was last placed, up to half the object's size
   // or kMemorySearchMax px away (ObjectMemory::search), in a window of the frame.
   // A frame whose boundary is the memory's fitted outline: its visible fraction is the frame's

@@ -101,22 +101,23 @@ Tracker::Impl::MemoryVerdict Tracker::Impl::judge_by_memory(Attempt* a, const Me
   return own_departure ? MemoryVerdict::kDeparts : MemoryVerdict::kStandsIn;
 }
 
-void Tracker::Impl::doubt_departure_from_memory(const MemoryCheck& check,
-                                                const Polygon& last_placed, TrackResult* result) {
-  if (!options_.object_memory || !memory_.ready() || frames_since_stand_in_ > kPartlySeenHold ||
+bool Tracker::Impl::departs_after_stand_in(const MemoryCheck& check, const Attempt& a) const {
+  if (!options_.object_memory || !memory_.ready() || !a.choice ||
+      frames_since_stand_in_ > kPartlySeenHold ||
       (check.verdict != MemoryVerdict::kDeparts && check.verdict != MemoryVerdict::kUnjudged)) {
-    return;
+    return false;
   }
   // Taken within a second of the memory standing in for the partly hidden object, but most of it
-  // away from where the memory was fitted (or, with no fit, last placed): an occluder's outline
-  // closing the best cycle while the memory sees too little to stand in. The frame is only as
-  // sure as the memory's view of the object.
-  const Polygon& remembered = check.fit.valid ? check.fit.outline : last_placed;
-  if (remembered.empty() ||
-      memory_.mismatch(boundary_, remembered, agreement_distance(remembered)) <=
-          kElsewhereMismatch) {
-    return;
-  }
+  // away from the memory: an occluder's outline closing the best cycle while the memory sees too
+  // little to stand in.
+  const Polygon& remembered = check.fit.valid ? check.fit.outline : memory_.placed();
+  return !remembered.empty() &&
+         memory_.mismatch(a.boundary, remembered, agreement_distance(remembered)) >
+             kElsewhereMismatch;
+}
+
+void Tracker::Impl::doubt_departure_from_memory(TrackResult* result) const {
+  // The frame is only as sure as the memory's view of the object.
   result->confidence = std::min(result->confidence, result->visible);
   if (result->confidence < options_.min_visible) result->state = TrackState::kUncertain;
 }
