@@ -73,6 +73,9 @@ class ObjectMemory {
   // away from the rest of the map does not drag it), without looking at the image; empty when it
   // cannot be placed. `outline` runs along it when it is the object seen from another view.
   Polygon mapped_onto(const Polygon& outline) const;
+  // Places the remembered outline at `fitted`, a fit of it made elsewhere (fit_at()), held to the
+  // view found there.
+  void place_at(const Polygon& fitted) { placed_ = learnt_ = fitted; }
   // Where the outline was last placed (the last fit, or the last remembered boundary).
   const Polygon& placed() const { return placed_; }
 

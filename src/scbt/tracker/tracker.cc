@@ -146,6 +146,7 @@ void Tracker::Impl::init(const cv::Mat& frame, const Polygon& polygon) {
   appearance_.remember(frame, boundary_);
   shape_memory_.restart(boundary_);
   memory_.clear();
+  former_memory_.clear();
   memory_provisional_ = 0;
   new_view_frames_ = 0;
   frames_since_stand_in_ = kPartlySeenHold + 1;

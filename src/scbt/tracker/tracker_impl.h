@@ -247,7 +247,12 @@ class Tracker::Impl {
   StableChooser chooser_;     // its buffers and distance cache are reused frame to frame
   ShapeMemory shape_memory_;  // the shape the choice weighs candidates against
   ObjectMemory memory_;       // the object's outline and edges (TrackerOptions::object_memory)
+  // The memory as it was before it last restarted on a new view: when a cycle the current memory
+  // does not agree with agrees with it, seeing kResumeVisible of it, the restart was wrong (an
+  // occluder's cut taken as a view) or the view came back, and it is the memory again.
+  ObjectMemory former_memory_;
   cv::Mat memory_gray_;       // the window the memory is fitted to while lost
+  cv::Point memory_gray_tl_;  // its top-left corner in the frame
   // While lost: the memory looked for where the object was last placed and around it
   // (search_memory). Tracking resumes from it when TrackerOptions::min_visible of its outline is
   // seen (kResumed, *result filled); with kPredictVisible seen the object is there, partly hidden
@@ -294,8 +299,16 @@ class Tracker::Impl {
   struct MemoryCheck {
     MemoryFit fit;
     MemoryVerdict verdict = MemoryVerdict::kUnjudged;
+    // kNewView seen kNewViewFrames in a row (not a provisional memory's restart on a departure):
+    // the memory it replaces is kept (former_memory_).
+    bool new_view_seen = false;
   };
   MemoryCheck check_with_memory(const cv::Mat& frame, Attempt* a);
+  // The former memory fitted where `outline` is in the grey window `gray` (top-left `tl`): when it
+  // sees kResumeVisible of itself there, more than `current` (the memory's fit) does, it is the
+  // memory again, placed there, and *back is its fit.
+  bool return_to_former_memory(const Polygon& outline, const MemoryFit& current,
+                               const cv::Mat& gray, cv::Point tl, MemoryFit* back);
   // What the memory learns from the confident cycle taken this frame (boundary_, found in gray_
   // at `tl`), by the check's verdict.
   void learn_from_cycle(const MemoryCheck& check, cv::Point tl);

@@ -20,6 +20,7 @@ MemoryFit Tracker::Impl::search_memory(const cv::Mat& frame, double accept_visib
       detection_roi(memory_.placed(), radius + options_.memory.search_px, frame_size_);
   if (roi.empty()) return {};
   to_exposed_gray(frame(roi), &memory_gray_);
+  memory_gray_tl_ = roi.tl();
   return memory_.search(memory_gray_, roi.tl(), radius, accept_visible);
 }
 
@@ -37,6 +38,19 @@ Tracker::Impl::MemoryCheck Tracker::Impl::check_with_memory(const cv::Mat& frame
       check.verdict = judge_by_memory(a, check.fit);
     }
   }
+  if (check.verdict != MemoryVerdict::kAgrees && former_memory_.ready()) {
+    // A restart on a wrong cycle (an occluder's cut taken for a new view) is undone when the
+    // memory before it sees the object better, where the cycle or the fit puts it.
+    if (a->choice && !a->assessed) assess(a, boundary_);
+    MemoryFit back;
+    if ((a->choice &&
+         return_to_former_memory(a->boundary, check.fit, gray_, gray_roi_.tl(), &back)) ||
+        (check.fit.valid &&
+         return_to_former_memory(check.fit.outline, check.fit, gray_, gray_roi_.tl(), &back))) {
+      check.fit = back;
+      check.verdict = judge_by_memory(a, back);
+    }
+  }
   // A new view stays; an occluder passing in front changes the cycle's cut frame by frame (a
   // hand's fingers over a rim pass as the object's own edges in grey): the memory takes a new
   // view only after kNewViewFrames frames in a row show one, and meanwhile follows no cycle.
@@ -44,6 +58,7 @@ Tracker::Impl::MemoryCheck Tracker::Impl::check_with_memory(const cv::Mat& frame
   if (check.verdict == MemoryVerdict::kNewView && new_view_frames_ < kNewViewFrames) {
     check.verdict = MemoryVerdict::kDeparts;
   }
+  check.new_view_seen = check.verdict == MemoryVerdict::kNewView;
   if (memory_provisional_ > 0) {
     --memory_provisional_;
     if (check.verdict == MemoryVerdict::kDeparts || check.verdict == MemoryVerdict::kStandsIn) {
@@ -51,6 +66,23 @@ Tracker::Impl::MemoryCheck Tracker::Impl::check_with_memory(const cv::Mat& frame
     }
   }
   return check;
+}
+
+bool Tracker::Impl::return_to_former_memory(const Polygon& outline, const MemoryFit& current,
+                                            const cv::Mat& gray, cv::Point tl, MemoryFit* back) {
+  if (!former_memory_.ready() || outline.empty()) return false;
+  const MemoryFit former = former_memory_.fit_at(outline, gray, tl);
+  if (!former.valid || former.visible < kResumeVisible ||
+      (current.valid && former.visible <= current.visible)) {
+    return false;
+  }
+  memory_ = std::move(former_memory_);
+  former_memory_.clear();
+  memory_.place_at(former.outline);
+  new_view_frames_ = 0;
+  memory_provisional_ = 0;
+  *back = former;
+  return true;
 }
 
 void Tracker::Impl::learn_from_cycle(const MemoryCheck& check, cv::Point tl) {
@@ -65,6 +97,7 @@ void Tracker::Impl::learn_from_cycle(const MemoryCheck& check, cv::Point tl) {
       memory_.remember(boundary_, gray_, tl);
       break;
     case MemoryVerdict::kNewView:
+      if (check.new_view_seen) former_memory_ = memory_;
       memory_.restart(boundary_, gray_, tl);
       break;
     case MemoryVerdict::kDeparts:

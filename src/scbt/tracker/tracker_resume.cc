@@ -40,6 +40,14 @@ Tracker::Impl::MemoryResume Tracker::Impl::resume_from_memory(const cv::Mat& fra
   if (!options_.object_memory || !memory_.ready()) return MemoryResume::kNotSeen;
   // Looked for around where it was: the object may have moved while it was lost.
   *seen = search_memory(frame, kPredictVisible);
+  if (former_memory_.ready() && (!seen->valid || seen->visible < options_.min_visible)) {
+    // Where the memory is, the one before its last restart may see the object better.
+    MemoryFit back;
+    if (return_to_former_memory(seen->valid ? seen->outline : memory_.placed(), *seen, memory_gray_,
+                                memory_gray_tl_, &back)) {
+      *seen = back;
+    }
+  }
   if (!seen->valid) return MemoryResume::kNotSeen;
   // The remembered edges seen where the object was, as much as a stand-in is `tracking` with:
   // the object, not a look-alike elsewhere. With less, it is there, partly hidden.
@@ -83,6 +91,7 @@ void Tracker::Impl::resume_tracking_from(const cv::Mat& frame, Polygon boundary,
     if (vouched_by_memory) {
       memory_.place_onto(boundary_, reference_gray_, reference_roi_.tl());
     } else {
+      if (memory_provisional_ == 0) former_memory_ = memory_;
       memory_.restart(boundary_, reference_gray_, reference_roi_.tl());
       memory_provisional_ = kProvisionalFrames;
     }
