@@ -247,9 +247,10 @@ class Tracker::Impl {
   StableChooser chooser_;     // its buffers and distance cache are reused frame to frame
   ShapeMemory shape_memory_;  // the shape the choice weighs candidates against
   ObjectMemory memory_;       // the object's outline and edges (TrackerOptions::object_memory)
-  // The memory as it was before it last restarted on a new view: when a cycle the current memory
-  // does not agree with agrees with it, seeing kResumeVisible of it, the restart was wrong (an
-  // occluder's cut taken as a view) or the view came back, and it is the memory again.
+  // The memory as it was before it last restarted (on a new view, or on a whole-frame re-find):
+  // where a cycle the current memory does not agree with, or the current fit, puts the object and
+  // it sees kResumeVisible of itself, more than the current memory, the restart was wrong (an
+  // occluder's cut taken for a view) or the view came back, and it is the memory again.
   ObjectMemory former_memory_;
   cv::Mat memory_gray_;       // the window the memory is fitted to while lost
   cv::Point memory_gray_tl_;  // its top-left corner in the frame
