@@ -18,7 +18,11 @@ MemoryFit Tracker::Impl::search_memory(const cv::Mat& frame, double accept_visib
   const double radius = std::min(kMemorySearchMax, 0.5 * std::sqrt(area(memory_.placed())));
   const cv::Rect roi =
       detection_roi(memory_.placed(), radius + options_.memory.search_px, frame_size_);
-  if (roi.empty()) return {};
+  if (roi.empty()) {
+    // No window this frame: none to fit the former memory to either (resume_from_memory).
+    memory_gray_.release();
+    return {};
+  }
   to_exposed_gray(frame(roi), &memory_gray_);
   memory_gray_tl_ = roi.tl();
   return memory_.search(memory_gray_, roi.tl(), radius, accept_visible);
