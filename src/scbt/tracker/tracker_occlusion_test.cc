@@ -17,6 +17,7 @@
 #include "scbt/eval/occlusion.h"
 #include "scbt/eval/roc.h"
 #include "scbt/synthetic/scene.h"
+#include "scbt/testing/dim_camera_test_util.h"
 #include "scbt/testing/tracker_test_util.h"
 #include "scbt/tracker/tracker.h"
 
@@ -174,14 +175,8 @@ std::vector<SceneFrame> bitten_disc_clip(int frames, int bar_in, int bar_out, in
                     cv::FILLED);
     }
     for (int q = 0; q < quarter_turns; ++q) cv::rotate(image, image, cv::ROTATE_90_CLOCKWISE);
-    cv::Mat noise(image.size(), CV_16SC1);
-    rng.fill(noise, cv::RNG::NORMAL, 0, 2);
-    cv::Mat noisy;
-    image.convertTo(noisy, CV_16SC1);
-    noisy += noise;
-    noisy.convertTo(image, CV_8UC1);
     cv::Mat bgr;
-    cv::cvtColor(image, bgr, cv::COLOR_GRAY2BGR);
+    cv::cvtColor(dim_camera_frame(image, 1.0, 2.0, &rng), bgr, cv::COLOR_GRAY2BGR);
     clip.push_back({bgr, truth});
   }
   return clip;
